@@ -1,0 +1,48 @@
+# Helpers shared by every target of the project.
+
+# Per-target warnings and language level.
+function(pmap_target_defaults target)
+  target_compile_features(${target} PUBLIC cxx_std_17)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wno-psabi)
+  if(PMAP_SANITIZE)
+    target_compile_options(${target} PRIVATE
+      -fsanitize=address,undefined,float-cast-overflow -fno-omit-frame-pointer -fno-sanitize-recover=all)
+    target_link_options(${target} PUBLIC
+      -fsanitize=address,undefined,float-cast-overflow)
+  endif()
+endfunction()
+
+# pmap_add_library(<name> SOURCES ... [PUBLIC_DEPS ...] [PRIVATE_DEPS ...])
+# Creates pmap_<name> (alias pmap::<name>) with include/ as its public include dir.
+function(pmap_add_library name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;PUBLIC_DEPS;PRIVATE_DEPS" ${ARGN})
+  add_library(pmap_${name} STATIC ${ARG_SOURCES})
+  add_library(pmap::${name} ALIAS pmap_${name})
+  target_include_directories(pmap_${name} PUBLIC
+    $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>)
+  target_link_libraries(pmap_${name} PUBLIC ${ARG_PUBLIC_DEPS} PRIVATE ${ARG_PRIVATE_DEPS})
+  pmap_target_defaults(pmap_${name})
+endfunction()
+
+# pmap_add_app(<name> SOURCES ... DEPS ...)
+function(pmap_add_app name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE ${ARG_DEPS})
+  pmap_target_defaults(${name})
+  set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/bin)
+endfunction()
+
+# pmap_add_gtest(<name> SOURCES ... DEPS ... [LABELS ...])
+function(pmap_add_gtest name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;LABELS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest GTest::gtest_main)
+  pmap_target_defaults(${name})
+  target_compile_definitions(${name} PRIVATE
+    PMAP_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    PMAP_BINARY_DIR="${PROJECT_BINARY_DIR}"
+    PMAP_TEST_TMP_DIR="${PROJECT_BINARY_DIR}/test-tmp")
+  set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/tests)
+  gtest_discover_tests(${name} TEST_PREFIX "${name}." DISCOVERY_TIMEOUT 60 PROPERTIES LABELS "${ARG_LABELS}")
+endfunction()

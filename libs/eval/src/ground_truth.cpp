@@ -1,0 +1,231 @@
+#include "pmap/eval/ground_truth.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+
+#include "pmap/common/error.h"
+
+namespace pmap::eval {
+namespace {
+
+using nlohmann::json;
+
+class Fields {
+ public:
+  explicit Fields(std::string file) : file_(std::move(file)) {}
+  const json& at(const json& j, const std::string& key, const std::string& where) const {
+    if (!j.is_object() || !j.contains(key)) {
+      fail(where + "." + key + " is missing");
+    }
+    return j.at(key);
+  }
+  double number(const json& j, const std::string& key, const std::string& where) const {
+    const json& v = at(j, key, where);
+    if (!v.is_number()) {
+      fail(where + "." + key + " is not a number");
+    }
+    return v.get<double>();
+  }
+  Eigen::Vector3d vec3(const json& v, const std::string& where) const {
+    if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() ||
+        !v[2].is_number()) {
+      fail(where + " is not an [x, y, z] array");
+    }
+    return {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
+  }
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InputError(file_ + ": ground truth: " + what);
+  }
+
+ private:
+  std::string file_;
+};
+
+json parseFile(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) {
+    throw InputError(path.string() + ": cannot open ground truth file");
+  }
+  try {
+    return json::parse(in);
+  } catch (const json::exception& e) {
+    throw InputError(path.string() + ": not valid JSON: " + e.what());
+  }
+}
+
+void readPoses(const json& doc, const Fields& f, GroundTruth& gt) {
+  const json& poses = f.at(doc, "poses", "");
+  for (size_t i = 0; i < poses.size(); ++i) {
+    const json& p = poses[i];
+    if (!p.is_array() || p.size() != 7) {
+      f.fail("poses[" + std::to_string(i) + "] is not [t, x, y, z, yaw, pitch, roll]");
+    }
+    gt.poses.append(p[0].get<double>(),
+                    mrpt::math::TPose3D(p[1].get<double>(), p[2].get<double>(),
+                                        p[3].get<double>(), p[4].get<double>(),
+                                        p[5].get<double>(), p[6].get<double>()));
+  }
+}
+
+void readSurfaces(const json& doc, const Fields& f, GroundTruth& gt) {
+  for (const json& s : f.at(doc, "surfaces", "")) {
+    GtRectangle r;
+    r.id = static_cast<int>(f.number(s, "id", "surfaces[]"));
+    const std::string where = "surfaces[id " + std::to_string(r.id) + "]";
+    r.kind = f.at(s, "kind", where).get<std::string>();
+    const json& c = f.at(s, "corners", where);
+    if (!c.is_array() || c.size() != 4) {
+      f.fail(where + ".corners must have 4 points");
+    }
+    for (int k = 0; k < 4; ++k) {
+      r.corners[k] = f.vec3(c[k], where + ".corners");
+    }
+    r.normal = f.vec3(f.at(s, "normal", where), where + ".normal");
+    if (s.contains("parent") && s["parent"].is_number()) {
+      r.parent = s["parent"].get<int>();
+    }
+    gt.surfaces.push_back(r);
+  }
+}
+
+void readClutter(const json& doc, const Fields& f, GroundTruth& gt) {
+  if (!doc.contains("clutter")) {
+    return;
+  }
+  for (const json& c : doc["clutter"]) {
+    const int id = static_cast<int>(f.number(c, "id", "clutter[]"));
+    const std::string where = "clutter[id " + std::to_string(id) + "]";
+    const std::string shape = f.at(c, "shape", where).get<std::string>();
+    const std::string kind = f.at(c, "kind", where).get<std::string>();
+    if (shape == "cylinder") {
+      GtCylinder y{id, kind, {}, 0, 0, 0};
+      const Eigen::Vector3d centre = f.vec3(f.at(c, "centre", where), where + ".centre");
+      y.centre = centre.head<2>();
+      y.radius = f.number(c, "radius_m", where);
+      y.z_min = f.number(c, "z_min_m", where);
+      y.z_max = f.number(c, "z_max_m", where);
+      gt.cylinders.push_back(y);
+    } else if (shape == "box") {
+      GtBox b;
+      b.id = id;
+      b.kind = kind;
+      const Eigen::Vector3d centre = f.vec3(f.at(c, "centre", where), where + ".centre");
+      const Eigen::Vector3d size = f.vec3(f.at(c, "size_m", where), where + ".size_m");
+      b.centre = centre.head<2>();
+      b.yaw = c.contains("yaw") ? c["yaw"].get<double>() : 0.0;
+      b.min = Eigen::Vector3d(-size.x() / 2, -size.y() / 2, f.number(c, "z_min_m", where));
+      b.max = Eigen::Vector3d(size.x() / 2, size.y() / 2, f.number(c, "z_max_m", where));
+      gt.boxes.push_back(b);
+    } else {
+      f.fail(where + ".shape '" + shape + "' is not cylinder or box");
+    }
+  }
+}
+
+void readHits(const json& doc, const Fields& f, GroundTruth& gt) {
+  for (const json& s : f.at(doc, "structure_scans", "")) {
+    const auto index = static_cast<std::int64_t>(f.number(s, "index", "structure_scans[]"));
+    gt.hits[index] = f.at(s, "hits", "structure_scans[]").get<std::vector<int>>();
+  }
+}
+
+double distanceToCylinder(const GtCylinder& c, const Eigen::Vector3d& p) {
+  const double dr = (p.head<2>() - c.centre).norm() - c.radius;  // > 0: outside the side
+  const double dz = std::max(c.z_min - p.z(), p.z() - c.z_max);  // > 0: below or above
+  if (dz <= 0) {
+    return dr > 0 ? dr : std::min(-dr, -dz);  // inside: nearest of side and caps
+  }
+  return dr > 0 ? std::hypot(dr, dz) : dz;
+}
+
+double distanceToBox(const GtBox& b, const Eigen::Vector3d& p) {
+  const double c = std::cos(-b.yaw);
+  const double s = std::sin(-b.yaw);
+  const Eigen::Vector2d d = p.head<2>() - b.centre;
+  const Eigen::Vector3d q(c * d.x() - s * d.y(), s * d.x() + c * d.y(), p.z());
+  const Eigen::Vector3d outside = (b.min - q).cwiseMax(q - b.max).cwiseMax(0.0);
+  if (outside.squaredNorm() > 0) {
+    return outside.norm();
+  }
+  return (q - b.min).cwiseMin(b.max - q).minCoeff();  // inside: distance to the nearest face
+}
+
+}  // namespace
+
+double distanceToRectangle(const std::array<Eigen::Vector3d, 4>& c, const Eigen::Vector3d& p) {
+  const Eigen::Vector3d u = c[1] - c[0];
+  const Eigen::Vector3d v = c[3] - c[0];
+  const double lu = u.norm();
+  const double lv = v.norm();
+  if (lu == 0 || lv == 0) {
+    return (p - c[0]).norm();
+  }
+  const Eigen::Vector3d eu = u / lu;
+  const Eigen::Vector3d ev = (v - eu * eu.dot(v)).normalized();
+  const Eigen::Vector3d n = eu.cross(ev);
+  const Eigen::Vector3d d = p - c[0];
+  const double a = std::clamp(d.dot(eu), 0.0, lu);
+  const double b = std::clamp(d.dot(ev), 0.0, ev.dot(v));
+  const double h = d.dot(n);
+  const Eigen::Vector3d in_plane = d - n * h;
+  const double da = d.dot(eu) - a;
+  const double db = in_plane.dot(ev) - b;
+  return std::sqrt(h * h + da * da + db * db);
+}
+
+const GtRectangle* GroundTruth::surface(int id) const {
+  for (const auto& s : surfaces) {
+    if (s.id == id) {
+      return &s;
+    }
+  }
+  return nullptr;
+}
+
+bool GroundTruth::isClutter(int id) const {
+  for (const auto& c : cylinders) {
+    if (c.id == id) return true;
+  }
+  for (const auto& b : boxes) {
+    if (b.id == id) return true;
+  }
+  return false;
+}
+
+double GroundTruth::distance(int id, const Eigen::Vector3d& p) const {
+  if (const GtRectangle* r = surface(id)) {
+    return distanceToRectangle(r->corners, p);
+  }
+  for (const auto& c : cylinders) {
+    if (c.id == id) return distanceToCylinder(c, p);
+  }
+  for (const auto& b : boxes) {
+    if (b.id == id) return distanceToBox(b, p);
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+GroundTruth readGroundTruth(const std::filesystem::path& path) {
+  const json doc = parseFile(path);
+  const Fields f(path.string());
+  GroundTruth gt;
+  try {
+    gt.world = f.at(doc, "world", "").get<std::string>();
+    gt.sigma_m = f.number(doc, "sigma_m", "");
+    readPoses(doc, f, gt);
+    readSurfaces(doc, f, gt);
+    readClutter(doc, f, gt);
+    readHits(doc, f, gt);
+  } catch (const json::exception& e) {
+    f.fail(std::string("unexpected field type: ") + e.what());
+  }
+  if (gt.poses.empty()) {
+    f.fail("no poses");
+  }
+  return gt;
+}
+
+}  // namespace pmap::eval

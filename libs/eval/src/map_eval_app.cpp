@@ -1,0 +1,118 @@
+#include "pmap/eval/map_eval_app.h"
+
+#include <mrpt/core/bits_math.h>
+
+#include <cstdio>
+#include <optional>
+
+#include "pmap/common/error.h"
+#include "pmap/common/text.h"
+#include "pmap/config/command_line.h"
+#include "pmap/eval/ground_truth.h"
+#include "pmap/eval/label_check.h"
+#include "pmap/eval/map_files.h"
+#include "pmap/eval/pose_metrics.h"
+#include "pmap/products/json_file.h"
+
+namespace pmap::eval {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+std::optional<MapEvalArgs> parseArgs(int argc, const char* const* argv) {
+  TCLAP::CmdLine cmd(
+      "map-eval: scores a planar-mapper output directory (poses.txt, points.ply, ...) against "
+      "the ground truth written by indoor-sim (PREFIX.gt.json). Exit codes: 0 ok, 1 usage, 2 "
+      "input data error, 4 output write error.",
+      ' ', "0.1.0");
+  TCLAP::ValueArg<std::string> map("m", "map", "planar-mapper output directory", true, "", "DIR",
+                                   cmd);
+  TCLAP::ValueArg<std::string> gt("g", "gt", "ground truth (indoor-sim PREFIX.gt.json)", true,
+                                  "", "FILE", cmd);
+  TCLAP::ValueArg<std::string> out("o", "out", "evaluation output", false, "eval.json",
+                                   "eval.json", cmd);
+  TCLAP::SwitchArg quiet("q", "quiet", "no report on stdout", cmd);
+  if (!config::parseCommandLine(cmd, argc, argv)) {
+    return std::nullopt;
+  }
+  return MapEvalArgs{map.getValue(), gt.getValue(), out.getValue(), quiet.getValue()};
+}
+
+json poseJson(const PoseErrors& e) {
+  return {{"matched", e.matched},
+          {"ate_m", e.ate_m},
+          {"ate_first_pose_aligned_m", e.ate_first_pose_m},
+          {"final_error_m", e.final_error_m},
+          {"max_error_m", e.max_error_m},
+          {"yaw_rms_deg", e.yaw_rms_deg},
+          {"alignment", {{"yaw_deg", mrpt::RAD2DEG(e.alignment.yaw)},
+                         {"x", e.alignment.t.x()},
+                         {"y", e.alignment.t.y()}}}};
+}
+
+json labelJson(const LabelCheck& c) {
+  return {{"points", c.points},
+          {"labelled", c.labelled},
+          {"unlabelled", c.unlabelled},
+          {"within_3sigma", c.within_3sigma},
+          {"fraction_within_3sigma", c.fraction_within_3sigma},
+          {"median_m", c.median_m},
+          {"p99_m", c.p99_m},
+          {"max_m", c.max_m}};
+}
+
+}  // namespace
+
+json evaluateMap(const MapEvalArgs& args) {
+  const GroundTruth gt = readGroundTruth(args.gt);
+  const poses::Trajectory estimated = readMapPoses(args.map_dir / "poses.txt");
+  const PoseErrors pe = comparePoses(estimated, gt.poses);
+  if (pe.matched == 0) {
+    throw InputError((args.map_dir / "poses.txt").string() +
+                     ": no pose overlaps the ground truth's time span (different run?)");
+  }
+  json doc;
+  doc["map"] = args.map_dir.string();
+  doc["gt"] = args.gt.string();
+  doc["world"] = gt.world;
+  doc["sigma_m"] = gt.sigma_m;
+  doc["pose_ate_m"] = pe.ate_m;
+  doc["pose"] = poseJson(pe);
+  const fs::path ply = args.map_dir / "points.ply";
+  if (fs::exists(ply)) {
+    doc["label_check"] = labelJson(checkLabels(gt, readMapPoints(ply), pe.alignment));
+  }
+  return doc;
+}
+
+int mapEvalMain(int argc, const char* const* argv) {
+  try {
+    const auto args = parseArgs(argc, argv);
+    if (!args) {
+      return 0;
+    }
+    const json doc = evaluateMap(*args);
+    products::writeJsonFile(args->out, doc);
+    if (!args->quiet) {
+      std::printf("pose_ate_m %.4f (first-pose aligned %.4f, %zu poses)\n",
+                  doc["pose_ate_m"].get<double>(),
+                  doc["pose"]["ate_first_pose_aligned_m"].get<double>(),
+                  doc["pose"]["matched"].get<std::size_t>());
+      if (doc.contains("label_check")) {
+        std::printf("points on their labelled surface within 3 sigma: %.4f (median %.4f m)\n",
+                    doc["label_check"]["fraction_within_3sigma"].get<double>(),
+                    doc["label_check"]["median_m"].get<double>());
+      }
+    }
+    return 0;
+  } catch (const Error& e) {
+    std::fprintf(stderr, "map-eval: error: %s\n", e.what());
+    return e.exitCode();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "map-eval: error: internal failure: %s\n", oneLineError(e.what()).c_str());
+    return static_cast<int>(ExitCode::kProcessing);
+  }
+}
+
+}  // namespace pmap::eval

@@ -1,0 +1,35 @@
+// Command line of planar-mapper (parsed with TCLAP, as MRPT's own apps).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pmap/input/observation_source.h"
+
+namespace pmap::mapper {
+
+struct MapperArgs {
+  std::filesystem::path config;   ///< ini (default: config/default.ini)
+  std::filesystem::path rawlog;   ///< input rawlog (default: the bundled sample)
+  std::filesystem::path cloud;    ///< --cloud FILE.ply instead of a rawlog
+  std::filesystem::path poses;    ///< --poses FILE: given poses instead of ICP
+  std::filesystem::path out = "planar-mapper-out";
+  bool poses_only = false;
+  bool accept_truncated = false;
+  bool quiet = false;             ///< no progress line
+  input::SelectionOptions selection;
+};
+
+/// Parses argv. Returns nullopt after printing --help / --version (exit 0).
+/// Throws ConfigError for bad usage.
+std::optional<MapperArgs> parseMapperArgs(int argc, const char* const* argv);
+
+/// Where the bundled files live: the source tree this binary was built from,
+/// else the installed share directory.
+std::filesystem::path defaultConfigPath();
+std::filesystem::path defaultSamplePath();
+
+}  // namespace pmap::mapper

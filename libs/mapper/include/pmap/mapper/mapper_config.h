@@ -1,0 +1,44 @@
+// The run's configuration: one ini in MRPT syntax with the project's sections
+// ([Sensors], [Output]) and MRPT's own ([ICP], [MappingApplication] and its
+// sub-sections, read by MRPT's loaders through config::StrictMrptConfig).
+// Unknown sections, keys and bad values are ConfigErrors (doc/configuration.md).
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "pmap/config/effective_config.h"
+#include "pmap/config/ini_document.h"
+#include "pmap/input/sensor_roles.h"
+#include "pmap/points/raw_mesh.h"
+
+namespace pmap::config {
+class SectionReader;
+}
+
+namespace pmap::mapper {
+
+/// [Output]
+struct OutputOptions {
+  bool raw_map = true;  ///< write raw.wrl, the paper's raw polygon map
+  points::RawMeshOptions raw_mesh;  ///< raw_max_edge_m
+  void load(config::SectionReader& reader);
+  bool validate(std::string* why) const;
+};
+
+struct MapperConfig {
+  config::IniDocument doc;
+  std::shared_ptr<config::EffectiveConfig> effective;
+  input::SensorsOptions sensors;
+  OutputOptions output;
+};
+
+/// Loads and validates the project's sections; rejects sections nobody owns.
+/// MRPT's sections are checked when the pose stage reads them.
+MapperConfig loadMapperConfig(const std::filesystem::path& path);
+
+/// MRPT-owned section names (an entry ending in '*' is a prefix).
+const std::vector<std::string>& mrptSections();
+
+}  // namespace pmap::mapper

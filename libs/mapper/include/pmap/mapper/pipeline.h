@@ -1,0 +1,50 @@
+// The mapping pipeline as data flows: rawlog -> input steps -> poses ->
+// placed structure points -> raw mesh (-> EM in later stages). Streaming:
+// memory grows with the map, not with the file.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "pmap/input/observation_source.h"
+#include "pmap/input/structure_points.h"
+#include "pmap/mapper/mapper_args.h"
+#include "pmap/mapper/mapper_config.h"
+#include "pmap/points/point_map.h"
+#include "pmap/points/scan_placer.h"
+#include "pmap/poses/icp_pose_tracker.h"
+#include "pmap/poses/trajectory.h"
+
+namespace pmap::mapper {
+
+struct StageTiming {
+  double read_s = 0;  ///< decoding the rawlog
+  double pose_s = 0;  ///< ICP and pose handling
+  double map_s = 0;   ///< extracting, placing and meshing points
+};
+
+struct MappingResult {
+  points::PointMap map;
+  poses::Trajectory trajectory;
+  std::vector<std::array<std::uint32_t, 3>> raw_triangles;
+  std::string pose_source;  ///< "icp", "file", "identity", "cloud"
+  input::InputStats input;
+  poses::PoseStats pose_stats;
+  points::PlacementStats placement;
+  input::DropCounts dropped;
+  std::uint64_t measurements = 0;  ///< all structure measurements seen (beams, pixels)
+  double first_time = 0;           ///< recorded span of the selected observations (s)
+  double last_time = 0;
+  StageTiming timing;
+  std::string truncation;          ///< non-empty: accepted truncation message
+  double duration() const { return last_time > first_time ? last_time - first_time : 0.0; }
+};
+
+/// Runs the pipeline on a rawlog or a PLY cloud. Throws ConfigError,
+/// InputError (bad data, nothing to map), ProcessingError.
+MappingResult runPipeline(const MapperConfig& config, const MapperArgs& args);
+
+}  // namespace pmap::mapper

@@ -1,0 +1,102 @@
+#include "pmap/mapper/outputs.h"
+
+#include <chrono>
+#include <nlohmann/json.hpp>
+
+#include "pmap/common/atomic_file.h"
+#include "pmap/poses/poses_file.h"
+#include "pmap/products/json_file.h"
+#include "pmap/products/point_files.h"
+#include "pmap/products/vrml.h"
+
+namespace pmap::mapper {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+json inputSummary(const MapperArgs& args, const MappingResult& r) {
+  json in;
+  in["file"] = args.cloud.empty() ? args.rawlog.string() : args.cloud.string();
+  in["format"] = args.cloud.empty() ? input::toString(r.input.format) : "ply";
+  in["records"] = r.input.records;
+  in["observations"] = r.input.observations;
+  in["pose_scans"] = r.input.pose_scans;
+  in["structure_scans"] = r.input.structure_scans;
+  in["odometry"] = r.input.odometry;
+  in["images"] = r.input.images;
+  in["structure_decimated"] = r.input.structure_decimated;
+  in["invalid_timestamps"] = r.input.invalid_timestamps;
+  in["leading_frame_skipped"] = r.input.leading_frame_skipped;
+  in["ignored"] = r.input.ignored;
+  in["truncated"] = !r.truncation.empty();
+  if (!r.truncation.empty()) {
+    in["truncation"] = r.truncation;
+  }
+  return in;
+}
+
+json summaryJson(const MapperArgs& args, const MappingResult& r, double write_s, double total_s) {
+  const double processing_s = r.timing.read_s + r.timing.pose_s + r.timing.map_s;
+  json s;
+  s["input"] = inputSummary(args, r);
+  s["scans"] = r.placement.placed;
+  s["scans_without_pose"] = r.placement.without_pose;
+  s["measurements"] = r.measurements;
+  s["points"] = r.map.size();
+  s["points_dropped"] = r.dropped.total();
+  s["points_dropped_by_reason"] = {{"invalid", r.dropped.invalid},
+                                   {"non_finite", r.dropped.non_finite},
+                                   {"out_of_range", r.dropped.out_of_range}};
+  s["raw_triangles"] = r.raw_triangles.size();
+  s["poses"] = {{"source", r.pose_source},
+                {"count", r.trajectory.size()},
+                {"scans_matched", r.pose_stats.scans_matched},
+                {"odometry_readings", r.pose_stats.odometry_readings},
+                {"non_monotonic", r.pose_stats.non_monotonic}};
+  s["duration_s"] = r.duration();
+  s["timing_s"] = {{"total", total_s},   {"read", r.timing.read_s}, {"pose", r.timing.pose_s},
+                   {"map", r.timing.map_s}, {"write", write_s}};
+  // One definition everywhere: recorded duration / wall time of reading,
+  // poses and mapping (writing excluded).
+  s["realtime_factor"] = processing_s > 0 ? r.duration() / processing_s : 0.0;
+  return s;
+}
+
+void writeRawMap(const fs::path& path, const MappingResult& r) {
+  products::VrmlMesh mesh;
+  mesh.name = "RawMap";
+  mesh.vertices = r.map.xyz();
+  mesh.triangles = r.raw_triangles;
+  mesh.color = {0.75, 0.75, 0.7};
+  products::writeVrml(path, {mesh},
+                      "planar-mapper raw map: " + std::to_string(r.raw_triangles.size()) +
+                          " triangles from neighbouring beams of consecutive scans");
+}
+
+}  // namespace
+
+void writeOutputs(const MapperConfig& config, const MapperArgs& args, const MappingResult& r,
+                  double elapsed_before_write_s) {
+  const auto t0 = std::chrono::steady_clock::now();
+  ensureWritableDirectory(args.out);
+  writeTextFileAtomically(args.out / "effective.ini",
+                          config.effective->toIniText({"effective configuration of planar-mapper",
+                                                       "source: " + config.doc.origin()}));
+  if (!r.trajectory.empty()) {
+    poses::writePosesFile(args.out / "poses.txt", r.trajectory);
+  }
+  if (!args.poses_only) {
+    products::writeScansCsv(args.out / "scans.csv", r.map);
+    products::writePointsPly(args.out / "points.ply", r.map, {});
+    if (config.output.raw_map) {
+      writeRawMap(args.out / "raw.wrl", r);
+    }
+  }
+  const double write_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  products::writeJsonFile(args.out / "summary.json",
+                          summaryJson(args, r, write_s, elapsed_before_write_s + write_s));
+}
+
+}  // namespace pmap::mapper

@@ -1,0 +1,189 @@
+#include "pmap/mapper/pipeline.h"
+
+#include <mrpt/system/datetime.h>
+
+#include <chrono>
+
+#include "pmap/common/error.h"
+#include "pmap/common/progress.h"
+#include "pmap/config/strict_mrpt_config.h"
+#include "pmap/input/ply_cloud.h"
+#include "pmap/input/rawlog_reader.h"
+#include "pmap/points/raw_mesh.h"
+#include "pmap/poses/pose_stage.h"
+#include "pmap/poses/poses_file.h"
+
+namespace pmap::mapper {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+/// ICP tracker configured from [ICP] / [MappingApplication*]; every key
+/// there must be read by MRPT's loaders.
+std::unique_ptr<poses::IcpPoseTracker> makeTracker(const MapperConfig& config) {
+  config::StrictMrptConfig mrpt_config(config.doc, mrptSections(), config.effective.get());
+  mrpt_config.requireSection("ICP");
+  mrpt_config.requireSection("MappingApplication");
+  std::unique_ptr<poses::IcpPoseTracker> tracker;
+  try {
+    tracker = std::make_unique<poses::IcpPoseTracker>(mrpt_config);
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    mrpt_config.throwLoaderError(e);
+  }
+  mrpt_config.checkAllRead();
+  return tracker;
+}
+
+class RawlogRun {
+ public:
+  RawlogRun(const MapperConfig& config, const MapperArgs& args, MappingResult& result)
+      : config_(config),
+        args_(args),
+        result_(result),
+        mesh_(config.output.raw_mesh),
+        placer_(result.map, config.sensors.max_pose_gap_s,
+                [this](const input::StructureScan& s, std::size_t record) { onPlaced(s, record); }) {}
+
+  void run() {
+    auto tracker = makeTracker(config_);  // validates the ICP sections in every mode
+    poses::PoseStage stage = args_.poses.empty()
+                                 ? poses::PoseStage(std::move(tracker))
+                                 : poses::PoseStage(poses::readPosesFile(args_.poses));
+    result_.pose_source = stage.source();
+    input::RawlogReaderOptions reader_options;
+    reader_options.accept_truncated = args_.accept_truncated;
+    input::RawlogReader reader(args_.rawlog, reader_options);
+    input::ObservationSource source(reader, input::RoleClassifier(config_.sensors),
+                                    args_.selection);
+    ProgressLine progress("planar-mapper", !args_.quiet);
+    input::InputStep step;
+    for (;;) {
+      auto t0 = Clock::now();
+      const bool more = source.next(step);
+      result_.timing.read_s += since(t0);
+      if (!more) {
+        break;
+      }
+      t0 = Clock::now();
+      stage.process(step, args_.rawlog.string());
+      result_.timing.pose_s += since(t0);
+      t0 = Clock::now();
+      collect(step);
+      placer_.drain(stage.trajectory(), stage.fixed());
+      result_.timing.map_s += since(t0);
+      progress.update(reader.compressedPosition(), reader.fileSize(),
+                      std::to_string(result_.map.size()) + " points");
+    }
+    finish(stage, source);
+    progress.finish(std::to_string(result_.map.size()) + " points");
+    result_.truncation = reader.truncationMessage();
+  }
+
+ private:
+  void collect(const input::InputStep& step) {
+    for (const auto& item : step.observations) {
+      const double t = mrpt::Clock::toDouble(item.obs->timestamp);
+      result_.first_time = seen_any_ ? std::min(result_.first_time, t) : t;
+      result_.last_time = seen_any_ ? std::max(result_.last_time, t) : t;
+      seen_any_ = true;
+      if (item.roles.structure && !args_.poses_only) {
+        input::StructureScan scan = input::extractStructureScan(*item.obs, item.structure_index);
+        result_.dropped += scan.dropped;
+        result_.measurements += scan.measurements();
+        placer_.add(std::move(scan));
+      }
+    }
+  }
+
+  void onPlaced(const input::StructureScan& scan, std::size_t record) {
+    if (config_.output.raw_map) {
+      mesh_.addScan(result_.map, record, scan.rows, scan.cols, scan.organised);
+    }
+  }
+
+  void finish(poses::PoseStage& stage, const input::ObservationSource& source) {
+    result_.input = source.stats();
+    result_.pose_stats = stage.stats();
+    const auto& in = result_.input;
+    const bool no_pose_source = in.pose_scans == 0 && in.odometry == 0 && args_.poses.empty();
+    if (no_pose_source && placer_.pending() == 1) {
+      result_.pose_source = "identity";  // a single 3D frame: its own frame is the world
+      placer_.placeAllAt(mrpt::math::TPose3D());
+    } else if (no_pose_source && placer_.pending() > 1) {
+      throw InputError(args_.rawlog.string() + ": " + std::to_string(placer_.pending()) +
+                       " structure scans but no pose source (no odometry, no pose laser; "
+                       "give --poses FILE)");
+    }
+    placer_.drain(stage.trajectory(), true);
+    result_.trajectory = stage.trajectory();
+    result_.placement = placer_.stats();
+    result_.raw_triangles = mesh_.triangles();
+    checkUsable();
+  }
+
+  void checkUsable() const {
+    const auto& in = result_.input;
+    const std::string file = args_.rawlog.string();
+    if (in.pose_scans == 0 && in.structure_scans == 0) {
+      throw InputError(file + ": no usable scans (" + std::to_string(in.records) +
+                       " records, " + std::to_string(in.observations) +
+                       " observations; check the [Sensors] labels and the selection)");
+    }
+    if (args_.poses_only) {
+      if (result_.trajectory.empty()) {
+        throw InputError(file + ": no poses computed (no odometry or pose-laser scans)");
+      }
+      return;
+    }
+    if (in.structure_scans == 0) {
+      throw InputError(file + ": no structure observations (labels in [Sensors] structure); "
+                       "use --poses-only to compute poses only");
+    }
+    if (result_.placement.placed == 0) {
+      throw InputError(file + ": none of the " + std::to_string(in.structure_scans) +
+                       " structure scans has a pose (check timestamps and --poses)");
+    }
+  }
+
+  const MapperConfig& config_;
+  const MapperArgs& args_;
+  MappingResult& result_;
+  points::RawMeshBuilder mesh_;
+  points::ScanPlacer placer_;
+  bool seen_any_ = false;
+};
+
+MappingResult runCloud(const MapperArgs& args) {
+  MappingResult result;
+  const auto t0 = Clock::now();
+  input::StructureScan scan = input::readPlyCloud(args.cloud);
+  result.timing.read_s = since(t0);
+  result.pose_source = "cloud";
+  result.dropped = scan.dropped;
+  result.measurements = scan.measurements();
+  if (scan.points.empty()) {
+    throw InputError(args.cloud.string() + ": no finite points");
+  }
+  result.map.addScan(scan, mrpt::math::TPose3D());
+  result.placement.placed = 1;
+  result.input.structure_scans = 1;
+  return result;
+}
+
+}  // namespace
+
+MappingResult runPipeline(const MapperConfig& config, const MapperArgs& args) {
+  if (!args.cloud.empty()) {
+    return runCloud(args);
+  }
+  MappingResult result;
+  RawlogRun(config, args, result).run();
+  return result;
+}
+
+}  // namespace pmap::mapper

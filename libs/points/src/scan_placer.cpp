@@ -1,0 +1,48 @@
+#include "pmap/points/scan_placer.h"
+
+namespace pmap::points {
+
+void ScanPlacer::place(const input::StructureScan& scan, const mrpt::math::TPose3D& pose) {
+  const std::size_t record = map_.addScan(scan, pose);
+  ++stats_.placed;
+  if (on_placed_) {
+    on_placed_(scan, record);
+  }
+}
+
+void ScanPlacer::drain(const poses::Trajectory& trajectory, bool final_all) {
+  if (trajectory.empty()) {
+    return;
+  }
+  const auto& samples = trajectory.poses();
+  // Latest time up to which interpolation uses final samples only.
+  double final_until = trajectory.lastTime();
+  if (!final_all) {
+    if (samples.size() < 2) {
+      return;
+    }
+    final_until = samples[samples.size() - 2].t;
+  }
+  while (!pending_.empty() && pending_.front().timestamp <= final_until) {
+    const auto pose = trajectory.at(pending_.front().timestamp, max_gap_s_);
+    if (pose) {
+      place(pending_.front(), *pose);
+    } else {
+      ++stats_.without_pose;
+    }
+    pending_.pop_front();
+  }
+  if (final_all) {
+    stats_.without_pose += pending_.size();  // after the last pose
+    pending_.clear();
+  }
+}
+
+void ScanPlacer::placeAllAt(const mrpt::math::TPose3D& pose) {
+  for (const auto& scan : pending_) {
+    place(scan, pose);
+  }
+  pending_.clear();
+}
+
+}  // namespace pmap::points

@@ -1,0 +1,68 @@
+#include "pmap/poses/poses_file.h"
+
+#include <cinttypes>
+#include <cstdio>
+#include <fstream>
+
+#include "pmap/common/atomic_file.h"
+#include "pmap/common/error.h"
+#include "pmap/common/text.h"
+
+namespace pmap::poses {
+
+Trajectory readPosesFile(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    throw InputError(path.string() + ": poses file not found or not a regular file");
+  }
+  std::ifstream in(path);
+  if (!in) {
+    throw InputError(path.string() + ": cannot open poses file");
+  }
+  Trajectory trajectory;
+  std::string line;
+  int lineno = 0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    const std::string t = trim(line);
+    if (t.empty() || t[0] == '#') {
+      continue;
+    }
+    const auto where = path.string() + ":" + std::to_string(lineno) + ": ";
+    const auto fields = splitFields(t, " \t,");
+    if (fields.size() != 7) {
+      throw InputError(where + "expected 7 numbers (timestamp x y z yaw pitch roll), got " +
+                       std::to_string(fields.size()));
+    }
+    double v[7];
+    for (int i = 0; i < 7; ++i) {
+      const auto d = parseDouble(fields[i]);
+      if (!d) {
+        throw InputError(where + "'" + fields[i] + "' is not a finite number");
+      }
+      v[i] = *d;
+    }
+    if (!trajectory.empty() && v[0] <= trajectory.lastTime()) {
+      throw InputError(where + "timestamp " + fields[0] + " is not after the previous one");
+    }
+    trajectory.append(v[0], mrpt::math::TPose3D(v[1], v[2], v[3], v[4], v[5], v[6]));
+  }
+  if (trajectory.empty()) {
+    throw InputError(path.string() + ": no poses in file");
+  }
+  return trajectory;
+}
+
+void writePosesFile(const std::filesystem::path& path, const Trajectory& trajectory) {
+  writeFileAtomically(path, [&](std::ostream& out) {
+    out << "# timestamp x y z yaw pitch roll (s, m, rad)\n";
+    char buf[256];
+    for (const auto& p : trajectory.poses()) {
+      std::snprintf(buf, sizeof buf, "%.6f %.6f %.6f %.6f %.8f %.8f %.8f\n", p.t, p.pose.x,
+                    p.pose.y, p.pose.z, p.pose.yaw, p.pose.pitch, p.pose.roll);
+      out << buf;
+    }
+  });
+}
+
+}  // namespace pmap::poses
