@@ -11,8 +11,8 @@ TEST(GroundTruthGeometry, DistanceToRectangleInsideEdgeAndCorner) {
   // 2 x 1 rectangle in the plane z = 0.
   const std::array<Eigen::Vector3d, 4> r = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2, 0, 0),
                                             Eigen::Vector3d(2, 1, 0), Eigen::Vector3d(0, 1, 0)};
-  EXPECT_NEAR(distanceToRectangle(r, {1, 0.5, 0.3}), 0.3, 1e-12);   // above the inside
-  EXPECT_NEAR(distanceToRectangle(r, {1, -0.4, 0.3}), 0.5, 1e-12);  // beyond an edge
+  EXPECT_NEAR(distanceToRectangle(r, {1, 0.5, 0.3}), 0.3, 1e-12);         // above the inside
+  EXPECT_NEAR(distanceToRectangle(r, {1, -0.4, 0.3}), 0.5, 1e-12);        // beyond an edge
   EXPECT_NEAR(distanceToRectangle(r, {3, 2, 0}), std::sqrt(2.0), 1e-12);  // past a corner
   EXPECT_NEAR(distanceToRectangle(r, {0.5, 0.5, -0.2}), 0.2, 1e-12);
 }
@@ -20,9 +20,9 @@ TEST(GroundTruthGeometry, DistanceToRectangleInsideEdgeAndCorner) {
 TEST(GroundTruthGeometry, CylinderAndBoxDistances) {
   GroundTruth gt;
   gt.cylinders.push_back({5, "bin", {0, 0}, 0.25, 0.0, 1.0});
-  EXPECT_NEAR(gt.distance(5, {1.0, 0, 0.5}), 0.75, 1e-12);   // beside
-  EXPECT_NEAR(gt.distance(5, {0.1, 0, 1.5}), 0.5, 1e-12);    // above the lid
-  EXPECT_NEAR(gt.distance(5, {0.2, 0, 0.5}), 0.05, 1e-12);   // inside, near the side
+  EXPECT_NEAR(gt.distance(5, {1.0, 0, 0.5}), 0.75, 1e-12);  // beside
+  EXPECT_NEAR(gt.distance(5, {0.1, 0, 1.5}), 0.5, 1e-12);   // above the lid
+  EXPECT_NEAR(gt.distance(5, {0.2, 0, 0.5}), 0.05, 1e-12);  // inside, near the side
   EXPECT_NEAR(gt.distance(5, {1.25, 0, 2.0}), std::sqrt(2.0), 1e-12);
   GtBox b;
   b.id = 6;

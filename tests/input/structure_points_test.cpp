@@ -1,9 +1,9 @@
 #include "pmap/input/structure_points.h"
 
 #include <gtest/gtest.h>
+#include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationPointCloud.h>
-#include <mrpt/maps/CSimplePointsMap.h>
 
 #include <cmath>
 #include <limits>

@@ -12,9 +12,9 @@ enum class FixtureFormat { kObservations, kSensoryFrames };
 struct FixtureOptions {
   FixtureFormat format = FixtureFormat::kObservations;
   bool gzip = true;
-  int cycles = 20;               ///< 5 Hz cycles: odometry + LASER_H (+ LASER_V)
-  bool vertical = true;          ///< add a LASER_V scan per cycle
-  bool leading_frame = false;    ///< sf format: start with a frame without action
+  int cycles = 20;             ///< 5 Hz cycles: odometry + LASER_H (+ LASER_V)
+  bool vertical = true;        ///< add a LASER_V scan per cycle
+  bool leading_frame = false;  ///< sf format: start with a frame without action
   double speed_mps = 0.4;
 };
 

@@ -17,8 +17,8 @@ enum class Format { kAscii, kBinaryLE, kBinaryBE };
 
 struct Property {
   std::string name;
-  std::string type;             // scalar type, or the item type of a list
-  std::string count_type;       // non-empty for lists
+  std::string type;        // scalar type, or the item type of a list
+  std::string count_type;  // non-empty for lists
 };
 
 struct Element {
@@ -35,10 +35,9 @@ struct Header {
 
 int typeSize(const std::string& t) {
   static const std::map<std::string, int> sizes = {
-      {"char", 1},   {"uchar", 1},  {"int8", 1},    {"uint8", 1},   {"short", 2},
-      {"ushort", 2}, {"int16", 2},  {"uint16", 2},  {"int", 4},     {"uint", 4},
-      {"int32", 4},  {"uint32", 4}, {"float", 4},   {"float32", 4}, {"double", 8},
-      {"float64", 8}};
+      {"char", 1},  {"uchar", 1},   {"int8", 1},   {"uint8", 1},  {"short", 2}, {"ushort", 2},
+      {"int16", 2}, {"uint16", 2},  {"int", 4},    {"uint", 4},   {"int32", 4}, {"uint32", 4},
+      {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
   const auto it = sizes.find(t);
   return it == sizes.end() ? 0 : it->second;
 }
@@ -75,7 +74,7 @@ Header parseHeader(std::istream& in, const fs::path& path) {
       h.format = f[1] == "ascii"                  ? Format::kAscii
                  : f[1] == "binary_little_endian" ? Format::kBinaryLE
                  : f[1] == "binary_big_endian"    ? Format::kBinaryBE
-                                                  : (fail("unknown format '" + f[1] + "'"), Format{});
+                                               : (fail("unknown format '" + f[1] + "'"), Format{});
     } else if (f[0] == "element" && f.size() == 3) {
       const auto n = parseInt(f[2]);
       if (!n || *n < 0) {
@@ -115,13 +114,20 @@ double decode(const unsigned char* b, const std::string& t, bool swap) {
     std::memcpy(&v, tmp, sizeof v);
     return static_cast<double>(v);
   };
-  if (t == "char" || t == "int8") return as(std::int8_t{});
-  if (t == "uchar" || t == "uint8") return as(std::uint8_t{});
-  if (t == "short" || t == "int16") return as(std::int16_t{});
-  if (t == "ushort" || t == "uint16") return as(std::uint16_t{});
-  if (t == "int" || t == "int32") return as(std::int32_t{});
-  if (t == "uint" || t == "uint32") return as(std::uint32_t{});
-  if (t == "float" || t == "float32") return as(float{});
+  if (t == "char" || t == "int8")
+    return as(std::int8_t{});
+  if (t == "uchar" || t == "uint8")
+    return as(std::uint8_t{});
+  if (t == "short" || t == "int16")
+    return as(std::int16_t{});
+  if (t == "ushort" || t == "uint16")
+    return as(std::uint16_t{});
+  if (t == "int" || t == "int32")
+    return as(std::int32_t{});
+  if (t == "uint" || t == "uint32")
+    return as(std::uint32_t{});
+  if (t == "float" || t == "float32")
+    return as(float{});
   return as(double{});
 }
 
@@ -166,12 +172,13 @@ class DataReader {
   const fs::path& path_;
 };
 
-void checkCount(const Element& e, std::uint64_t data_bytes, const fs::path& path) {
-  // Every row takes at least one byte (ascii: a digit and a separator).
+void checkCount(const Element& e, Format format, std::uint64_t data_bytes, const fs::path& path) {
+  // The fewest bytes a row can take: binary, the scalar sizes (a list at least
+  // its count); ascii, a digit and a separator per scalar.
   std::uint64_t min_row = 0;
   for (const auto& p : e.properties) {
-    min_row += p.count_type.empty() ? static_cast<std::uint64_t>(typeSize(p.type))
-                                    : static_cast<std::uint64_t>(typeSize(p.count_type));
+    const std::string& t = p.count_type.empty() ? p.type : p.count_type;
+    min_row += format == Format::kAscii ? 2 : static_cast<std::uint64_t>(typeSize(t));
   }
   min_row = std::max<std::uint64_t>(min_row, 1);
   if (e.count > data_bytes / min_row + 1) {
@@ -206,7 +213,7 @@ PlyVertices readPlyVertices(const fs::path& path) {
   PlyVertices out;
   bool found = false;
   for (const auto& e : h.elements) {
-    checkCount(e, file_size - h.data_offset, path);
+    checkCount(e, h.format, file_size - h.data_offset, path);
     const bool is_vertex = e.name == "vertex";
     if (is_vertex) {
       found = true;
@@ -275,11 +282,16 @@ void writePlyVertices(const fs::path& path, const std::vector<PlyColumn>& column
               row.insert(row.end(), b, b + sizeof x);
             };
             const int size = typeSize(c.type);
-            if (c.type == "float" || c.type == "float32") put(static_cast<float>(v));
-            else if (c.type == "double" || c.type == "float64") put(v);
-            else if (size == 4) put(static_cast<std::int32_t>(v));
-            else if (size == 2) put(static_cast<std::int16_t>(v));
-            else put(static_cast<std::int8_t>(v));
+            if (c.type == "float" || c.type == "float32")
+              put(static_cast<float>(v));
+            else if (c.type == "double" || c.type == "float64")
+              put(v);
+            else if (size == 4)
+              put(static_cast<std::int32_t>(v));
+            else if (size == 2)
+              put(static_cast<std::int16_t>(v));
+            else
+              put(static_cast<std::int8_t>(v));
           }
           out.write(row.data(), static_cast<std::streamsize>(row.size()));
         }

@@ -36,6 +36,12 @@ class Fields {
     }
     return {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
   }
+  Eigen::Vector2d vec2(const json& v, const std::string& where) const {
+    if (!v.is_array() || v.size() < 2 || !v[0].is_number() || !v[1].is_number()) {
+      fail(where + " is not an [x, y] array");
+    }
+    return {v[0].get<double>(), v[1].get<double>()};
+  }
   [[noreturn]] void fail(const std::string& what) const {
     throw InputError(file_ + ": ground truth: " + what);
   }
@@ -63,10 +69,10 @@ void readPoses(const json& doc, const Fields& f, GroundTruth& gt) {
     if (!p.is_array() || p.size() != 7) {
       f.fail("poses[" + std::to_string(i) + "] is not [t, x, y, z, yaw, pitch, roll]");
     }
-    gt.poses.append(p[0].get<double>(),
-                    mrpt::math::TPose3D(p[1].get<double>(), p[2].get<double>(),
-                                        p[3].get<double>(), p[4].get<double>(),
-                                        p[5].get<double>(), p[6].get<double>()));
+    gt.poses.append(
+        p[0].get<double>(),
+        mrpt::math::TPose3D(p[1].get<double>(), p[2].get<double>(), p[3].get<double>(),
+                            p[4].get<double>(), p[5].get<double>(), p[6].get<double>()));
   }
 }
 
@@ -102,8 +108,7 @@ void readClutter(const json& doc, const Fields& f, GroundTruth& gt) {
     const std::string kind = f.at(c, "kind", where).get<std::string>();
     if (shape == "cylinder") {
       GtCylinder y{id, kind, {}, 0, 0, 0};
-      const Eigen::Vector3d centre = f.vec3(f.at(c, "centre", where), where + ".centre");
-      y.centre = centre.head<2>();
+      y.centre = f.vec2(f.at(c, "centre", where), where + ".centre");
       y.radius = f.number(c, "radius_m", where);
       y.z_min = f.number(c, "z_min_m", where);
       y.z_max = f.number(c, "z_max_m", where);
@@ -112,9 +117,9 @@ void readClutter(const json& doc, const Fields& f, GroundTruth& gt) {
       GtBox b;
       b.id = id;
       b.kind = kind;
-      const Eigen::Vector3d centre = f.vec3(f.at(c, "centre", where), where + ".centre");
+      const Eigen::Vector2d centre = f.vec2(f.at(c, "centre", where), where + ".centre");
       const Eigen::Vector3d size = f.vec3(f.at(c, "size_m", where), where + ".size_m");
-      b.centre = centre.head<2>();
+      b.centre = centre;
       b.yaw = c.contains("yaw") ? c["yaw"].get<double>() : 0.0;
       b.min = Eigen::Vector3d(-size.x() / 2, -size.y() / 2, f.number(c, "z_min_m", where));
       b.max = Eigen::Vector3d(size.x() / 2, size.y() / 2, f.number(c, "z_max_m", where));
@@ -187,10 +192,12 @@ const GtRectangle* GroundTruth::surface(int id) const {
 
 bool GroundTruth::isClutter(int id) const {
   for (const auto& c : cylinders) {
-    if (c.id == id) return true;
+    if (c.id == id)
+      return true;
   }
   for (const auto& b : boxes) {
-    if (b.id == id) return true;
+    if (b.id == id)
+      return true;
   }
   return false;
 }
@@ -200,10 +207,12 @@ double GroundTruth::distance(int id, const Eigen::Vector3d& p) const {
     return distanceToRectangle(r->corners, p);
   }
   for (const auto& c : cylinders) {
-    if (c.id == id) return distanceToCylinder(c, p);
+    if (c.id == id)
+      return distanceToCylinder(c, p);
   }
   for (const auto& b : boxes) {
-    if (b.id == id) return distanceToBox(b, p);
+    if (b.id == id)
+      return distanceToBox(b, p);
   }
   return std::numeric_limits<double>::quiet_NaN();
 }

@@ -28,10 +28,10 @@ std::optional<MapEvalArgs> parseArgs(int argc, const char* const* argv) {
       ' ', "0.1.0");
   TCLAP::ValueArg<std::string> map("m", "map", "planar-mapper output directory", true, "", "DIR",
                                    cmd);
-  TCLAP::ValueArg<std::string> gt("g", "gt", "ground truth (indoor-sim PREFIX.gt.json)", true,
-                                  "", "FILE", cmd);
-  TCLAP::ValueArg<std::string> out("o", "out", "evaluation output", false, "eval.json",
-                                   "eval.json", cmd);
+  TCLAP::ValueArg<std::string> gt("g", "gt", "ground truth (indoor-sim PREFIX.gt.json)", true, "",
+                                  "FILE", cmd);
+  TCLAP::ValueArg<std::string> out("o", "out", "evaluation output", false, "eval.json", "eval.json",
+                                   cmd);
   TCLAP::SwitchArg quiet("q", "quiet", "no report on stdout", cmd);
   if (!config::parseCommandLine(cmd, argc, argv)) {
     return std::nullopt;
@@ -46,9 +46,10 @@ json poseJson(const PoseErrors& e) {
           {"final_error_m", e.final_error_m},
           {"max_error_m", e.max_error_m},
           {"yaw_rms_deg", e.yaw_rms_deg},
-          {"alignment", {{"yaw_deg", mrpt::RAD2DEG(e.alignment.yaw)},
-                         {"x", e.alignment.t.x()},
-                         {"y", e.alignment.t.y()}}}};
+          {"alignment",
+           {{"yaw_deg", mrpt::RAD2DEG(e.alignment.yaw)},
+            {"x", e.alignment.t.x()},
+            {"y", e.alignment.t.y()}}}};
 }
 
 json labelJson(const LabelCheck& c) {

@@ -14,9 +14,13 @@ ScopedAllocationLimit::ScopedAllocationLimit(std::size_t max_bytes) : previous_(
   t_refused = false;
 }
 
-ScopedAllocationLimit::~ScopedAllocationLimit() { t_limit = previous_; }
+ScopedAllocationLimit::~ScopedAllocationLimit() {
+  t_limit = previous_;
+}
 
-bool ScopedAllocationLimit::refused() const { return t_refused; }
+bool ScopedAllocationLimit::refused() const {
+  return t_refused;
+}
 
 }  // namespace pmap::input
 
@@ -34,9 +38,19 @@ void* operator new(std::size_t size) {
   }
   throw std::bad_alloc();
 }
-void* operator new[](std::size_t size) { return ::operator new(size); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void* operator new[](std::size_t size) {
+  return ::operator new(size);
+}
+void operator delete(void* p) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+  std::free(p);
+}
 #endif

@@ -71,8 +71,8 @@ void ObservationSource::addObservation(const mrpt::obs::CObservation::Ptr& obs, 
     ++stats_.invalid_timestamps;
     return;
   }
-  if (item.roles.structure && item.structure_index % static_cast<std::int64_t>(
-                                                          selection_.decimate) != 0) {
+  if (item.roles.structure &&
+      item.structure_index % static_cast<std::int64_t>(selection_.decimate) != 0) {
     item.roles.structure = false;
     ++stats_.structure_decimated;
     if (!item.roles.any()) {

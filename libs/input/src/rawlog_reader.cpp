@@ -107,8 +107,12 @@ RawlogReader::RawlogReader(const fs::path& path, RawlogReaderOptions options)
 
 RawlogReader::~RawlogReader() = default;
 
-std::uint64_t RawlogReader::position() const { return stream_->getPosition(); }
-std::uint64_t RawlogReader::compressedPosition() const { return stream_->compressedPosition(); }
+std::uint64_t RawlogReader::position() const {
+  return stream_->getPosition();
+}
+std::uint64_t RawlogReader::compressedPosition() const {
+  return stream_->compressedPosition();
+}
 
 void RawlogReader::fail(const std::string& what, std::uint64_t offset) const {
   throw InputError(path_.string() + ": record " + std::to_string(records_) + " at byte " +
@@ -127,12 +131,12 @@ bool RawlogReader::handleEnd(std::uint64_t start, const std::string& what) {
   if (stream_->hasError() && !stream_->truncatedGzip()) {
     fail("corrupt gzip data (" + stream_->errorText() + ")", start);
   }
-  const std::string message =
-      path_.string() + ": record " + std::to_string(records_) + " at byte " +
-      std::to_string(start) + ": truncated file (" + what + ")";
+  const std::string message = path_.string() + ": record " + std::to_string(records_) +
+                              " at byte " + std::to_string(start) + ": truncated file (" + what +
+                              ")";
   if (!options_.accept_truncated) {
-    throw InputError(message + "; use --accept-truncated to keep the " +
-                     std::to_string(records_) + " complete records");
+    throw InputError(message + "; use --accept-truncated to keep the " + std::to_string(records_) +
+                     " complete records");
   }
   truncation_ = message;
   return false;

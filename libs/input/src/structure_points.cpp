@@ -22,7 +22,9 @@ bool finitePose(const CPose3D& p) {
          std::isfinite(p.yaw()) && std::isfinite(p.pitch()) && std::isfinite(p.roll());
 }
 
-bool finite(const Eigen::Vector3d& p) { return p.allFinite(); }
+bool finite(const Eigen::Vector3d& p) {
+  return p.allFinite();
+}
 
 Eigen::Vector3d toRobot(const CPose3D& sensor, double x, double y, double z) {
   double gx = 0;

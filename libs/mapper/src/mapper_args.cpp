@@ -1,11 +1,10 @@
 #include "pmap/mapper/mapper_args.h"
 
-
 #include <sstream>
 
 #include "pmap/common/error.h"
-#include "pmap/config/command_line.h"
 #include "pmap/common/text.h"
+#include "pmap/config/command_line.h"
 
 namespace pmap::mapper {
 namespace fs = std::filesystem;
@@ -48,19 +47,17 @@ std::optional<MapperArgs> parseMapperArgs(int argc, const char* const* argv) {
                                       false, "", "FILE.ini", cmd);
   TCLAP::ValueArg<std::string> rawlog("r", "rawlog", "input rawlog (plain or gzip)", false, "",
                                       "FILE.rawlog", cmd);
-  TCLAP::ValueArg<std::string> cloud("", "cloud", "map this point cloud instead of a rawlog",
-                                     false, "", "FILE.ply", cmd);
-  TCLAP::ValueArg<std::string> poses("", "poses",
-                                     "use these poses (poses.txt format) instead of ICP", false,
-                                     "", "FILE", cmd);
+  TCLAP::ValueArg<std::string> cloud("", "cloud", "map this point cloud instead of a rawlog", false,
+                                     "", "FILE.ply", cmd);
+  TCLAP::ValueArg<std::string> poses(
+      "", "poses", "use these poses (poses.txt format) instead of ICP", false, "", "FILE", cmd);
   TCLAP::ValueArg<std::string> out("o", "out", "output directory", false, "planar-mapper-out",
                                    "DIR", cmd);
-  TCLAP::SwitchArg poses_only("", "poses-only", "only run the pose stage and write poses.txt",
-                              cmd);
+  TCLAP::SwitchArg poses_only("", "poses-only", "only run the pose stage and write poses.txt", cmd);
   TCLAP::ValueArg<long long> from("", "from-index", "first rawlog record to use (as rawlog-edit)",
                                   false, 0, "N", cmd);
-  TCLAP::ValueArg<long long> to("", "to-index", "last rawlog record to use (inclusive)", false,
-                                -1, "N", cmd);
+  TCLAP::ValueArg<long long> to("", "to-index", "last rawlog record to use (inclusive)", false, -1,
+                                "N", cmd);
   TCLAP::MultiArg<std::string> keep("", "keep-label",
                                     "keep only observations with this sensor label (repeatable, "
                                     "or comma-separated)",

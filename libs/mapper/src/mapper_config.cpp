@@ -50,11 +50,13 @@ void OutputOptions::load(config::SectionReader& reader) {
   reader.read("raw_max_edge_m", raw_mesh.max_edge_m);
 }
 
-bool OutputOptions::validate(std::string* why) const { return raw_mesh.validate(why); }
+bool OutputOptions::validate(std::string* why) const {
+  return raw_mesh.validate(why);
+}
 
 MapperConfig loadMapperConfig(const std::filesystem::path& path) {
-  MapperConfig cfg{config::IniDocument::load(path), std::make_shared<config::EffectiveConfig>(),
-                   {}, {}};
+  MapperConfig cfg{
+      config::IniDocument::load(path), std::make_shared<config::EffectiveConfig>(), {}, {}};
   rejectUnknownSections(cfg.doc);
   config::loadOptions(cfg.doc, "Sensors", cfg.sensors, cfg.effective.get());
   config::loadOptions(cfg.doc, "Output", cfg.output, cfg.effective.get());

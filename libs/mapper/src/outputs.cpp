@@ -55,8 +55,11 @@ json summaryJson(const MapperArgs& args, const MappingResult& r, double write_s,
                 {"odometry_readings", r.pose_stats.odometry_readings},
                 {"non_monotonic", r.pose_stats.non_monotonic}};
   s["duration_s"] = r.duration();
-  s["timing_s"] = {{"total", total_s},   {"read", r.timing.read_s}, {"pose", r.timing.pose_s},
-                   {"map", r.timing.map_s}, {"write", write_s}};
+  s["timing_s"] = {{"total", total_s},
+                   {"read", r.timing.read_s},
+                   {"pose", r.timing.pose_s},
+                   {"map", r.timing.map_s},
+                   {"write", write_s}};
   // One definition everywhere: recorded duration / wall time of reading,
   // poses and mapping (writing excluded).
   s["realtime_factor"] = processing_s > 0 ? r.duration() / processing_s : 0.0;

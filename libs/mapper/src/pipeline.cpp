@@ -46,8 +46,9 @@ class RawlogRun {
         args_(args),
         result_(result),
         mesh_(config.output.raw_mesh),
-        placer_(result.map, config.sensors.max_pose_gap_s,
-                [this](const input::StructureScan& s, std::size_t record) { onPlaced(s, record); }) {}
+        placer_(
+            result.map, config.sensors.max_pose_gap_s,
+            [this](const input::StructureScan& s, std::size_t record) { onPlaced(s, record); }) {}
 
   void run() {
     auto tracker = makeTracker(config_);  // validates the ICP sections in every mode
@@ -130,8 +131,8 @@ class RawlogRun {
     const auto& in = result_.input;
     const std::string file = args_.rawlog.string();
     if (in.pose_scans == 0 && in.structure_scans == 0) {
-      throw InputError(file + ": no usable scans (" + std::to_string(in.records) +
-                       " records, " + std::to_string(in.observations) +
+      throw InputError(file + ": no usable scans (" + std::to_string(in.records) + " records, " +
+                       std::to_string(in.observations) +
                        " observations; check the [Sensors] labels and the selection)");
     }
     if (args_.poses_only) {
@@ -141,7 +142,8 @@ class RawlogRun {
       return;
     }
     if (in.structure_scans == 0) {
-      throw InputError(file + ": no structure observations (labels in [Sensors] structure); "
+      throw InputError(file +
+                       ": no structure observations (labels in [Sensors] structure); "
                        "use --poses-only to compute poses only");
     }
     if (result_.placement.placed == 0) {

@@ -12,8 +12,8 @@ bool RawMeshOptions::validate(std::string* why) const {
   return true;
 }
 
-RawMeshBuilder::Grid RawMeshBuilder::makeGrid(const PointMap& map, const ScanRecord& scan,
-                                              int rows, int cols) const {
+RawMeshBuilder::Grid RawMeshBuilder::makeGrid(const PointMap& map, const ScanRecord& scan, int rows,
+                                              int cols) const {
   Grid g;
   g.cols = cols;
   g.point_of_beam.assign(static_cast<size_t>(rows) * static_cast<size_t>(cols), -1);

@@ -6,7 +6,6 @@
 #include <mrpt/slam/CMetricMapBuilderICP.h>
 #include <mrpt/system/datetime.h>
 
-
 namespace pmap::poses {
 
 class IcpPoseTracker::Impl {
@@ -35,8 +34,7 @@ void IcpPoseTracker::recordPose(double t) {
   }
 }
 
-void IcpPoseTracker::processObservation(const mrpt::obs::CObservation::Ptr& obs,
-                                        bool is_odometry) {
+void IcpPoseTracker::processObservation(const mrpt::obs::CObservation::Ptr& obs, bool is_odometry) {
   impl_->builder.processObservation(obs);
   if (is_odometry) {
     ++stats_.odometry_readings;

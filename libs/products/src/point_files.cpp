@@ -44,9 +44,9 @@ void writeScansCsv(const std::filesystem::path& path, const points::PointMap& ma
       mrpt::poses::CPose3D(s.sensor_pose).getAsQuaternion(q);
       std::snprintf(buf, sizeof buf,
                     "%lld,%.6f,%s,%.6f,%.6f,%.6f,%.9f,%.9f,%.9f,%.9f,%.6f,%.6f,%.8f,%zu\n",
-                    static_cast<long long>(s.index), s.timestamp, s.label.c_str(),
-                    s.sensor_pose.x, s.sensor_pose.y, s.sensor_pose.z, q.r(), q.x(), q.y(), q.z(),
-                    s.robot_pose.x, s.robot_pose.y, s.robot_pose.yaw, s.num_points);
+                    static_cast<long long>(s.index), s.timestamp, s.label.c_str(), s.sensor_pose.x,
+                    s.sensor_pose.y, s.sensor_pose.z, q.r(), q.x(), q.y(), q.z(), s.robot_pose.x,
+                    s.robot_pose.y, s.robot_pose.yaw, s.num_points);
       out << buf;
     }
   });

@@ -15,8 +15,8 @@ namespace pmap {
 
 /// Vertex properties as columns of doubles.
 struct PlyVertices {
-  std::vector<std::string> names;           ///< property names, in file order
-  std::vector<std::vector<double>> columns; ///< one column per property
+  std::vector<std::string> names;            ///< property names, in file order
+  std::vector<std::vector<double>> columns;  ///< one column per property
   std::size_t size() const { return columns.empty() ? 0 : columns[0].size(); }
   /// Index of property `name`, or -1.
   int find(const std::string& name) const;

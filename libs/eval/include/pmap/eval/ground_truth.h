@@ -62,7 +62,6 @@ GroundTruth readGroundTruth(const std::filesystem::path& path);
 
 /// Distance from p to the closest point of a planar convex quadrilateral
 /// (a rectangle given by its four corners in order).
-double distanceToRectangle(const std::array<Eigen::Vector3d, 4>& corners,
-                           const Eigen::Vector3d& p);
+double distanceToRectangle(const std::array<Eigen::Vector3d, 4>& corners, const Eigen::Vector3d& p);
 
 }  // namespace pmap::eval

@@ -22,13 +22,13 @@ struct Rigid2D {
 Rigid2D alignRigid2D(const std::vector<Eigen::Vector2d>& a, const std::vector<Eigen::Vector2d>& b);
 
 struct PoseErrors {
-  std::size_t matched = 0;         ///< estimated poses with a ground-truth pose at their time
-  double ate_m = 0;                ///< RMS position error after the best rigid 2D alignment
-  double ate_first_pose_m = 0;     ///< RMS error with frames tied at the first pose, no fitting
-  double final_error_m = 0;        ///< position error of the last pose (after alignment)
-  double max_error_m = 0;          ///< largest position error (after alignment)
-  double yaw_rms_deg = 0;          ///< RMS heading error (after alignment)
-  Rigid2D alignment;               ///< estimated frame -> ground-truth frame
+  std::size_t matched = 0;      ///< estimated poses with a ground-truth pose at their time
+  double ate_m = 0;             ///< RMS position error after the best rigid 2D alignment
+  double ate_first_pose_m = 0;  ///< RMS error with frames tied at the first pose, no fitting
+  double final_error_m = 0;     ///< position error of the last pose (after alignment)
+  double max_error_m = 0;       ///< largest position error (after alignment)
+  double yaw_rms_deg = 0;       ///< RMS heading error (after alignment)
+  Rigid2D alignment;            ///< estimated frame -> ground-truth frame
 };
 
 /// Compares every estimated pose with the ground truth interpolated at its

@@ -9,8 +9,8 @@
 // Each value is a comma-separated list of labels. An empty label (an empty
 // value, or an empty item as in "A, ") matches unlabelled observations (MRPT's
 // shipped logs have none). The single word `none` assigns no sensor to the
-// role. max_pose_gap_s bounds pose interpolation. Odometry actions of the actions/sensory-frames format
-// (CActionRobotMovement2D) carry no label and are always odometry.
+// role. max_pose_gap_s bounds pose interpolation. Odometry actions of the actions/sensory-frames
+// format (CActionRobotMovement2D) carry no label and are always odometry.
 #pragma once
 
 #include <mrpt/obs/CObservation.h>

@@ -12,14 +12,14 @@
 namespace pmap::mapper {
 
 struct MapperArgs {
-  std::filesystem::path config;   ///< ini (default: config/default.ini)
-  std::filesystem::path rawlog;   ///< input rawlog (default: the bundled sample)
-  std::filesystem::path cloud;    ///< --cloud FILE.ply instead of a rawlog
-  std::filesystem::path poses;    ///< --poses FILE: given poses instead of ICP
+  std::filesystem::path config;  ///< ini (default: config/default.ini)
+  std::filesystem::path rawlog;  ///< input rawlog (default: the bundled sample)
+  std::filesystem::path cloud;   ///< --cloud FILE.ply instead of a rawlog
+  std::filesystem::path poses;   ///< --poses FILE: given poses instead of ICP
   std::filesystem::path out = "planar-mapper-out";
   bool poses_only = false;
   bool accept_truncated = false;
-  bool quiet = false;             ///< no progress line
+  bool quiet = false;  ///< no progress line
   input::SelectionOptions selection;
 };
 

@@ -21,7 +21,7 @@ namespace pmap::mapper {
 
 /// [Output]
 struct OutputOptions {
-  bool raw_map = true;  ///< write raw.wrl, the paper's raw polygon map
+  bool raw_map = true;              ///< write raw.wrl, the paper's raw polygon map
   points::RawMeshOptions raw_mesh;  ///< raw_max_edge_m
   void load(config::SectionReader& reader);
   bool validate(std::string* why) const;

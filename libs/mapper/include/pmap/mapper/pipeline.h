@@ -39,7 +39,7 @@ struct MappingResult {
   double first_time = 0;           ///< recorded span of the selected observations (s)
   double last_time = 0;
   StageTiming timing;
-  std::string truncation;          ///< non-empty: accepted truncation message
+  std::string truncation;  ///< non-empty: accepted truncation message
   double duration() const { return last_time > first_time ? last_time - first_time : 0.0; }
 };
 

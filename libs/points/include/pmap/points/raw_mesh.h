@@ -43,8 +43,7 @@ class RawMeshBuilder {
     std::vector<std::int64_t> point_of_beam;  // -1 where no valid point
   };
   Grid makeGrid(const PointMap& map, const ScanRecord& scan, int rows, int cols) const;
-  void addQuad(const PointMap& map, std::int64_t a, std::int64_t b, std::int64_t c,
-               std::int64_t d);
+  void addQuad(const PointMap& map, std::int64_t a, std::int64_t b, std::int64_t c, std::int64_t d);
 
   RawMeshOptions options_;
   std::map<std::string, Grid> previous_;  // last 2D scan of each sensor label

@@ -23,8 +23,8 @@ namespace pmap::poses {
 
 struct PoseStats {
   std::size_t odometry_readings = 0;
-  std::size_t scans_matched = 0;     ///< pose-laser scans handed to ICP
-  std::size_t non_monotonic = 0;     ///< samples refused: timestamp older than the last
+  std::size_t scans_matched = 0;  ///< pose-laser scans handed to ICP
+  std::size_t non_monotonic = 0;  ///< samples refused: timestamp older than the last
 };
 
 class IcpPoseTracker {

@@ -11,10 +11,10 @@
 namespace pmap::products {
 
 struct VrmlMesh {
-  std::string name;                               ///< DEF name (optional)
+  std::string name;  ///< DEF name (optional)
   std::vector<Eigen::Vector3d> vertices;
   std::vector<std::array<std::uint32_t, 3>> triangles;
-  Eigen::Vector3d color{0.8, 0.8, 0.8};           ///< diffuse RGB in [0, 1]
+  Eigen::Vector3d color{0.8, 0.8, 0.8};  ///< diffuse RGB in [0, 1]
 };
 
 /// Writes the meshes as one VRML97 file (atomically; throws OutputError).

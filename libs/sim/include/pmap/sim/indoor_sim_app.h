@@ -1,0 +1,39 @@
+// The indoor-sim command line as a testable class (apps/indoor-sim/main.cpp is
+// a thin shell over it):
+//   indoor-sim [--world FILE] [--seed N] [--sigma METRES] [--format obs|sf]
+//              [--duration SECONDS] [--no-cameras] [--quiet] --out PREFIX
+// Exit codes: 0 ok, 1 usage or configuration error, 2 input error, 4 output
+// error (pmap::Error::exitCode()).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "pmap/sim/simulator.h"
+
+namespace pmap::sim {
+
+class IndoorSimApp {
+ public:
+  /// Parses the command line. Returns false if there is nothing left to do
+  /// (--help or --version were printed). Throws ConfigError on usage errors.
+  bool initialize(int argc, const char* const* argv);
+  bool initialize(const std::vector<std::string>& args);  ///< args[0] is the program name
+
+  /// Runs the simulation and prints a summary on stderr; throws pmap::Error.
+  SimulationSummary run();
+
+  const SimulatorOptions& options() const { return options_; }
+
+ private:
+  SimulatorOptions options_;
+};
+
+/// Where indoor-sim looks for config/worlds/default.json, in order: the
+/// source tree it was built from, the install prefix's share directory, and
+/// ../share/planar_mapper/worlds next to the running executable.
+std::vector<std::string> defaultWorldCandidates();
+/// The first existing candidate; ConfigError listing them all otherwise.
+std::string findDefaultWorld();
+
+}  // namespace pmap::sim

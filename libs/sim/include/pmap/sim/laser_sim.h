@@ -1,0 +1,42 @@
+// Simulated 2D laser scans. Beam geometry follows MRPT's
+// CObservation2DRangeScan with rightToLeft = true: beam i has angle
+// a_i = -aperture/2 + i * aperture / (N - 1) and direction (cos a_i, sin a_i, 0)
+// in the sensor frame; the sensor frame is the mount pose (CPose3D convention)
+// composed on the robot pose. All of it is computed here with our own
+// rotations (pose.h), and checked against MRPT in the tests.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "pmap/sim/pose.h"
+#include "pmap/sim/ray_caster.h"
+#include "pmap/sim/rng.h"
+#include "pmap/sim/sensor_options.h"
+
+namespace pmap::sim {
+
+/// One simulated scan: what goes into the rawlog and the true hit per beam.
+struct SimulatedScan {
+  std::vector<float> ranges_m;        ///< noisy; max_range_m where invalid
+  std::vector<char> valid;            ///< 1 if a hit within max range (after noise)
+  std::vector<int> hit_ids;           ///< id hit by the true ray, -1 if none within max range
+  std::vector<double> true_ranges_m;  ///< noise-free distance, max_range_m if no hit
+};
+
+/// Angle of beam i in the sensor frame, radians.
+double beamAngle(const LaserOptions& laser, int beam);
+/// The mount pose of a laser on the robot (radians).
+Pose6D laserMountPose(const LaserOptions& laser);
+/// The sensor frame in the world for a planar robot pose.
+RigidTransform laserToWorld(const Pose2D& robot, const LaserOptions& laser);
+/// Unit direction of beam i in the world frame.
+Eigen::Vector3d beamDirectionInWorld(const Pose2D& robot, const LaserOptions& laser, int beam);
+
+/// Casts every beam from the sensor origin; adds N(0, sigma_m^2) noise drawn from
+/// `rng` (one draw per beam, hit or not). A noisy range beyond max range (or not
+/// positive) becomes invalid with range = max range.
+SimulatedScan simulateScan(const RayCaster& caster, const Pose2D& robot, const LaserOptions& laser,
+                           double sigma_m, Rng& rng);
+
+}  // namespace pmap::sim

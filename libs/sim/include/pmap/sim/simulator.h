@@ -1,0 +1,66 @@
+// indoor-sim's engine: loads and expands a world, drives the robot along its
+// path and writes the rawlog, the external images, the ground truth and the
+// true poses (doc/simulator.md, doc/ground-truth.md). Same world + seed +
+// options give byte-identical outputs.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "pmap/sim/output_paths.h"
+#include "pmap/sim/rawlog_writer.h"
+#include "pmap/sim/ray_caster.h"
+#include "pmap/sim/trajectory.h"
+#include "pmap/sim/world.h"
+
+namespace pmap::sim {
+
+struct SimulatorOptions {
+  std::filesystem::path world_file;  ///< a world JSON file
+  std::uint64_t seed = 1;            ///< every random draw derives from it
+  std::optional<double> sigma_m;     ///< overrides noise.range_sigma_m, metres
+  RawlogFormat format = RawlogFormat::kObservations;
+  std::optional<double> duration_s;  ///< cut the run after this many seconds
+  bool cameras = true;               ///< false: no images even if the world enables them
+  std::string out_prefix;            ///< PREFIX of the outputs
+  bool progress = true;              ///< progress line on stderr
+  bool validate(std::string* why) const;
+};
+
+struct SimulationSummary {
+  OutputPaths paths;
+  std::size_t cycles = 0;
+  std::size_t structure_scans = 0;
+  std::size_t images = 0;
+  std::size_t rawlog_objects = 0;
+  std::size_t surfaces = 0;
+  double duration_s = 0.0;     ///< simulated time, seconds
+  double path_length_m = 0.0;  ///< full path length (even if cut)
+};
+
+class Simulator {
+ public:
+  /// Loads and expands the world and checks the path (ConfigError).
+  explicit Simulator(SimulatorOptions options);
+  ~Simulator();
+
+  /// Writes every output (ConfigError, OutputError).
+  SimulationSummary run();
+
+  const World& world() const { return world_; }
+  const Trajectory& trajectory() const { return *trajectory_; }
+  const SimulatorOptions& options() const { return options_; }
+  /// Number of cycles run() will simulate.
+  std::size_t cycleCount() const;
+
+ private:
+  SimulatorOptions options_;
+  World world_;
+  std::unique_ptr<Trajectory> trajectory_;
+  std::unique_ptr<RayCaster> caster_;
+};
+
+}  // namespace pmap::sim

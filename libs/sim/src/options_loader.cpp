@@ -1,0 +1,101 @@
+#include "options_loader.h"
+
+#include "pmap/common/error.h"
+
+namespace pmap::sim::detail {
+namespace {
+
+void readLaser(JsonReader r, LaserOptions& laser) {
+  laser.label = r.string("label", laser.label);
+  laser.beams = r.integer("beams", laser.beams, 2, 100000);
+  laser.aperture_deg = r.number("aperture_deg", laser.aperture_deg, positive(360.0));
+  laser.max_range_m = r.number("max_range_m", laser.max_range_m, positive(1000.0));
+  laser.position_m = r.triple("position_m", laser.position_m);
+  laser.ypr_deg = r.triple("ypr_deg", laser.ypr_deg);
+  laser.time_offset_s = r.number("time_offset_s", laser.time_offset_s, closed(0.0, 10.0));
+  r.finish();
+}
+
+CameraMount readMount(JsonReader r) {
+  CameraMount m;
+  m.label = r.string("label", "");
+  if (m.label.empty()) {
+    r.failMissing("label");
+  }
+  m.position_m = r.triple("position_m", m.position_m);
+  m.look = r.choice("look", "", {"left", "right", "forward", "backward"}, true);
+  r.finish();
+  return m;
+}
+
+void readCameras(JsonReader r, CameraOptions& cams) {
+  cams.enabled = r.boolean("enabled", cams.enabled);
+  cams.rate_hz = r.number("rate_hz", cams.rate_hz, positive(100.0));
+  cams.time_offset_s = r.number("time_offset_s", cams.time_offset_s, closed(0.0, 10.0));
+  cams.width_px = r.integer("width_px", cams.width_px, 16, 8192);
+  cams.height_px = r.integer("height_px", cams.height_px, 16, 8192);
+  cams.hfov_deg = r.number("hfov_deg", cams.hfov_deg, closed(10.0, 170.0));
+  cams.jpeg_quality = r.integer("jpeg_quality", cams.jpeg_quality, 1, 100);
+  if (r.has("mounts")) {
+    cams.mounts.clear();
+    for (JsonReader m : r.objects("mounts")) {
+      cams.mounts.push_back(readMount(m));
+    }
+  }
+  r.finish();
+}
+
+}  // namespace
+
+PathSpec readPath(JsonReader r) {
+  PathSpec p;
+  p.waypoints = r.points2("waypoints", 2);
+  p.speed_m_s = r.number("speed_m_s", p.speed_m_s, positive(10.0));
+  p.corner_radius_m = r.number("corner_radius_m", p.corner_radius_m, closed(0.0, 100.0));
+  p.max_yaw_rate_deg_s = r.number("max_yaw_rate_deg_s", p.max_yaw_rate_deg_s, positive(360.0));
+  p.robot_radius_m = r.number("robot_radius_m", p.robot_radius_m, closed(0.0, 2.0));
+  r.finish();
+  std::string why;
+  if (!p.validate(&why)) {
+    throw ConfigError(r.file() + ": " + r.path() + ": " + why);
+  }
+  return p;
+}
+
+SensorOptions readSensors(JsonReader r) {
+  SensorOptions s;
+  s.cycle_hz = r.number("cycle_hz", s.cycle_hz, positive(1000.0));
+  s.start_time_s = r.number("start_time_s", s.start_time_s, Range{0.0, 4.0e9, false, true});
+  s.odometry_label = r.string("odometry_label", s.odometry_label);
+  readLaser(r.object("laser_h"), s.laser_h);
+  readLaser(r.object("laser_v"), s.laser_v);
+  readCameras(r.object("cameras"), s.cameras);
+  r.finish();
+  std::string why;
+  if (!s.validate(&why)) {
+    throw ConfigError(r.file() + ": sensors: " + why);
+  }
+  return s;
+}
+
+NoiseOptions readNoise(JsonReader r) {
+  NoiseOptions n;
+  n.range_sigma_m = r.number("range_sigma_m", n.range_sigma_m, closed(0.0, 1.0));
+  n.odometry_scale_error =
+      r.number("odometry_scale_error", n.odometry_scale_error, closed(-0.5, 0.5));
+  n.odometry_heading_drift_deg_per_m = r.number(
+      "odometry_heading_drift_deg_per_m", n.odometry_heading_drift_deg_per_m, closed(-90.0, 90.0));
+  n.odometry_random_signs = r.boolean("odometry_random_signs", n.odometry_random_signs);
+  n.odometry_sigma_xy_m = r.number("odometry_sigma_xy_m", n.odometry_sigma_xy_m, closed(0.0, 1.0));
+  n.odometry_sigma_yaw_deg =
+      r.number("odometry_sigma_yaw_deg", n.odometry_sigma_yaw_deg, closed(0.0, 45.0));
+  n.image_sigma = r.number("image_sigma", n.image_sigma, closed(0.0, 100.0));
+  r.finish();
+  std::string why;
+  if (!n.validate(&why)) {
+    throw ConfigError(r.file() + ": noise: " + why);
+  }
+  return n;
+}
+
+}  // namespace pmap::sim::detail

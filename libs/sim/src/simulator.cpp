@@ -1,0 +1,223 @@
+#include "pmap/sim/simulator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "pmap/common/error.h"
+#include "pmap/common/progress.h"
+#include "pmap/sim/camera_rig.h"
+#include "pmap/sim/ground_truth.h"
+#include "pmap/sim/laser_sim.h"
+#include "pmap/sim/observation_factory.h"
+#include "pmap/sim/odometry_sim.h"
+#include "pmap/sim/path_check.h"
+#include "pmap/sim/world_builder.h"
+#include "pmap/sim/world_loader.h"
+
+namespace pmap::sim {
+namespace {
+
+/// Simulates the cycles of one run and feeds the rawlog and the ground truth.
+class CycleRunner {
+ public:
+  CycleRunner(const World& world, const Trajectory& trajectory, const RayCaster& caster,
+              const SimulatorOptions& options, const CameraRig* rig)
+      : world_(world),
+        trajectory_(trajectory),
+        caster_(caster),
+        options_(options),
+        rig_(rig),
+        odometry_(world.noise, options.seed) {}
+
+  CycleRecord run(std::size_t k, GroundTruthRecorder& gt);
+  std::size_t images() const { return images_; }
+  const OdometrySimulator& odometry() const { return odometry_; }
+
+ private:
+  using Timed = std::pair<double, mrpt::obs::CObservation::Ptr>;
+  Timed scan(const LaserOptions& laser, std::size_t k, double t_rel, GroundTruthRecorder* gt);
+
+  const World& world_;
+  const Trajectory& trajectory_;
+  const RayCaster& caster_;
+  const SimulatorOptions& options_;
+  const CameraRig* rig_;
+  OdometrySimulator odometry_;
+  Pose2D previous_pose_;
+  int next_image_ = 0;
+  std::size_t images_ = 0;
+};
+
+CycleRunner::Timed CycleRunner::scan(const LaserOptions& laser, std::size_t k, double t_rel,
+                                     GroundTruthRecorder* gt) {
+  const double sigma = world_.noise.range_sigma_m;
+  Rng rng(deriveSeed(options_.seed, "laser:" + laser.label, k));
+  const SimulatedScan s = simulateScan(caster_, trajectory_.poseAtTime(t_rel), laser, sigma, rng);
+  const auto stamp = simTimestamp(world_.sensors.start_time_s, t_rel);
+  if (gt != nullptr) {
+    gt->addStructureScan(mrpt::Clock::toDouble(stamp), laser.label, s.hit_ids);
+  }
+  return {t_rel, makeScanObservation(laser, s, stamp, sigma)};
+}
+
+CycleRecord CycleRunner::run(std::size_t k, GroundTruthRecorder& gt) {
+  const SensorOptions& sensors = world_.sensors;
+  const double t_k = static_cast<double>(k) / sensors.cycle_hz;
+  const Pose2D pose = trajectory_.poseAtTime(t_k);
+  const Pose2D increment = k == 0 ? Pose2D{} : odometry_.advance(between(previous_pose_, pose));
+  previous_pose_ = pose;
+  const auto stamp = simTimestamp(sensors.start_time_s, t_k);
+  CycleRecord record;
+  record.odometry = makeOdometryObservation(sensors.odometry_label, odometry_.pose(), stamp);
+  record.action = makeOdometryAction(increment, stamp);
+
+  std::vector<Timed> timed;
+  timed.push_back(scan(sensors.laser_h, k, t_k + sensors.laser_h.time_offset_s, nullptr));
+  const bool image_due = rig_ != nullptr && next_image_ / sensors.cameras.rate_hz <= t_k + 1e-9;
+  if (image_due) {
+    const double t_cam = t_k + sensors.cameras.time_offset_s;
+    for (auto& obs : rig_->capture(trajectory_.poseAtTime(t_cam), next_image_,
+                                   simTimestamp(sensors.start_time_s, t_cam))) {
+      timed.emplace_back(t_cam, obs);
+      ++images_;
+    }
+    while (next_image_ / sensors.cameras.rate_hz <= t_k + 1e-9) {
+      ++next_image_;
+    }
+  }
+  timed.push_back(scan(sensors.laser_v, k, t_k + sensors.laser_v.time_offset_s, &gt));
+  std::stable_sort(timed.begin(), timed.end(),
+                   [](const Timed& a, const Timed& b) { return a.first < b.first; });
+
+  std::vector<double> pose_times = {t_k};
+  for (const Timed& t : timed) {
+    pose_times.push_back(t.first);
+    record.observations.push_back(t.second);
+  }
+  std::sort(pose_times.begin(), pose_times.end());
+  for (const double t : pose_times) {
+    gt.addPose(mrpt::Clock::toDouble(simTimestamp(sensors.start_time_s, t)),
+               trajectory_.poseAtTime(t));
+  }
+  return record;
+}
+
+GroundTruthMeta makeMeta(const World& world, const SimulatorOptions& options,
+                         const Trajectory& trajectory, const CycleRunner& runner,
+                         const OutputPaths& paths, std::size_t cycles) {
+  const SensorOptions& sensors = world.sensors;
+  GroundTruthMeta meta;
+  meta.world_name = world.name;
+  meta.world_file = options.world_file.filename().string();
+  meta.seed = options.seed;
+  meta.sigma_m = world.noise.range_sigma_m;
+  meta.rawlog_format = rawlogFormatName(options.format);
+  meta.start_time_s = sensors.start_time_s;
+  meta.images_dir_name = paths.images_dir_name;
+  meta.cameras_enabled = sensors.cameras.enabled;
+  meta.intrinsics = PinholeIntrinsics::fromFov(sensors.cameras.width_px, sensors.cameras.height_px,
+                                               degToRad(sensors.cameras.hfov_deg));
+  meta.odometry = {runner.odometry().scaleError(), runner.odometry().headingDriftRadPerM()};
+  meta.path_length_m = trajectory.length_m();
+  meta.duration_s = static_cast<double>(cycles - 1) / sensors.cycle_hz;
+  meta.cycles = cycles;
+  meta.images = runner.images();
+  return meta;
+}
+
+}  // namespace
+
+bool SimulatorOptions::validate(std::string* why) const {
+  auto fail = [why](const std::string& m) {
+    if (why != nullptr) {
+      *why = m;
+    }
+    return false;
+  };
+  if (world_file.empty()) {
+    return fail("world_file must be set");
+  }
+  if (out_prefix.empty()) {
+    return fail("out_prefix must be set");
+  }
+  if (sigma_m && !(*sigma_m >= 0.0 && *sigma_m <= 1.0)) {
+    return fail("sigma_m must be in [0, 1] metres");
+  }
+  if (duration_s && !(*duration_s > 0.0 && *duration_s <= 1.0e6)) {
+    return fail("duration_s must be in (0, 1e6] seconds");
+  }
+  return true;
+}
+
+Simulator::Simulator(SimulatorOptions options) : options_(std::move(options)) {
+  std::string why;
+  if (!options_.validate(&why)) {
+    throw ConfigError("simulator options: " + why);
+  }
+  world_ = buildWorld(loadWorldFile(options_.world_file));
+  if (options_.sigma_m) {
+    world_.noise.range_sigma_m = *options_.sigma_m;
+  }
+  if (!options_.cameras) {
+    world_.sensors.cameras.enabled = false;
+  }
+  trajectory_ = std::make_unique<Trajectory>(world_.path, world_.source_file);
+  caster_ = std::make_unique<RayCaster>(world_);
+  checkPathClearance(*caster_, *trajectory_, world_.path.robot_radius_m, world_.source_file);
+}
+
+Simulator::~Simulator() = default;
+
+std::size_t Simulator::cycleCount() const {
+  const SensorOptions& s = world_.sensors;
+  double total = trajectory_->duration_s();
+  if (options_.duration_s) {
+    total = std::min(total, *options_.duration_s);
+  }
+  double last_offset = std::max(s.laser_h.time_offset_s, s.laser_v.time_offset_s);
+  if (s.cameras.enabled) {
+    last_offset = std::max(last_offset, s.cameras.time_offset_s);
+  }
+  const double cycles = std::floor((total - last_offset) * s.cycle_hz + 1e-9) + 1.0;
+  return static_cast<std::size_t>(std::max(1.0, cycles));
+}
+
+SimulationSummary Simulator::run() {
+  SimulationSummary summary;
+  summary.paths = OutputPaths::fromPrefix(options_.out_prefix);
+  const OutputPaths& paths = summary.paths;
+  ImagesDirTransaction images_dir(paths);
+  const std::vector<cv::Mat> posters =
+      writePosterImages(world_, options_.seed, paths.images_tmp_dir);
+  std::unique_ptr<CameraRig> rig;
+  if (world_.sensors.cameras.enabled) {
+    rig = std::make_unique<CameraRig>(world_, posters, options_.seed, paths.images_tmp_dir);
+  }
+  RawlogWriter writer(paths.rawlog, options_.format);
+  GroundTruthRecorder gt;
+  CycleRunner runner(world_, *trajectory_, *caster_, options_, rig.get());
+  const std::size_t n = cycleCount();
+  ProgressLine progress("indoor-sim", options_.progress);
+  for (std::size_t k = 0; k < n; ++k) {
+    writer.write(runner.run(k, gt));
+    progress.update(k + 1, n, std::to_string(runner.images()) + " images");
+  }
+  progress.finish(std::to_string(n) + " cycles, " + std::to_string(runner.images()) + " images");
+
+  const GroundTruthMeta meta = makeMeta(world_, options_, *trajectory_, runner, paths, n);
+  images_dir.commit();
+  gt.write(paths.gt_json, paths.poses_txt, world_, meta);
+  writer.commit();
+
+  summary.cycles = n;
+  summary.structure_scans = gt.structureScanCount();
+  summary.images = runner.images();
+  summary.rawlog_objects = writer.objectsWritten();
+  summary.surfaces = world_.surfaces.size();
+  summary.duration_s = meta.duration_s;
+  summary.path_length_m = trajectory_->length_m();
+  return summary;
+}
+
+}  // namespace pmap::sim

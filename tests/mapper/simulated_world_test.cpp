@@ -1,0 +1,123 @@
+// planar-mapper on the simulator's default world (written by the CTest
+// fixture default_world, see CMakeLists.txt), scored with map-eval's code
+// against the simulator's own ground truth.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "app_runner.h"
+#include "pmap/common/ply.h"
+#include "pmap/eval/ground_truth.h"
+#include "pmap/eval/map_eval_app.h"
+#include "pmap/mapper/planar_mapper_app.h"
+#include "rawlog_fixtures.h"
+
+namespace pmap::mapper {
+namespace {
+namespace fs = std::filesystem;
+
+const fs::path kSim = PMAP_SIM_DIR;
+
+int run(const std::vector<std::string>& args) {
+  return testing::runMain(&planarMapperMain, "planar-mapper", args);
+}
+
+fs::path mapWorld(const std::string& name, const std::string& prefix, bool true_poses) {
+  const fs::path out = testing::freshTestDir(name);
+  std::vector<std::string> args = {"--rawlog", (kSim / (prefix + ".rawlog")).string(), "--out",
+                                   out.string(), "-q"};
+  if (true_poses) {
+    args.push_back("--poses");
+    args.push_back((kSim / (prefix + ".poses.txt")).string());
+  }
+  EXPECT_EQ(run(args), 0);
+  return out;
+}
+
+nlohmann::json evaluate(const fs::path& map, const std::string& prefix) {
+  return eval::evaluateMap({map, kSim / (prefix + ".gt.json"), map / "eval.json", true});
+}
+
+std::string fileBytes(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// Independent geometry check: the simulator finds hits by its own ray casting;
+// the mapper projects the recorded ranges with MRPT's conventions.
+TEST(DefaultWorld, WithTruePosesPointsLieOnTheirLabelledSurfaces) {
+  const fs::path map = mapWorld("world_true", "default-obs", true);
+  const auto e = evaluate(map, "default-obs");
+  const auto& c = e["label_check"];
+  EXPECT_GE(c["fraction_within_3sigma"].get<double>(), 0.99);
+  EXPECT_GT(c["labelled"].get<int>(), 80000);
+  EXPECT_EQ(c["unlabelled"], 0);
+  EXPECT_LT(e["pose_ate_m"].get<double>(), 1e-6);
+}
+
+// One beam by hand: the vertical laser's middle beam points straight up from
+// its mount at 0.3 m, so under the flat 2.7 m ceiling it measures 2.4 m and its
+// point sits at the robot's x, y.
+TEST(DefaultWorld, StraightUpBeamHitsTheCeilingAtHeightMinusMount) {
+  const fs::path map = mapWorld("world_up_beam", "default-obs", true);
+  const eval::GroundTruth gt = eval::readGroundTruth(kSim / "default-obs.gt.json");
+  const PlyVertices v = readPlyVertices(map / "points.ply");
+  const double sigma = gt.sigma_m;
+  int ceiling_hits = 0;
+  int within = 0;
+  for (size_t i = 0; i < v.size(); ++i) {
+    if (v.columns[4][i] != 90) {
+      continue;
+    }
+    const int id = gt.hits.at(static_cast<int>(v.columns[3][i]))[90];
+    const eval::GtRectangle* s = gt.surface(id);
+    ASSERT_NE(s, nullptr);
+    if (s->kind != "ceiling") {
+      continue;
+    }
+    ++ceiling_hits;
+    const double range = v.columns[2][i] - 0.3;
+    within += std::abs(range - 2.4) <= 3 * sigma ? 1 : 0;
+  }
+  EXPECT_GT(ceiling_hits, 500);
+  EXPECT_GE(within, 0.99 * ceiling_hits);
+}
+
+TEST(DefaultWorld, EstimatedPosesAreWithinFiveCentimetres) {
+  const fs::path map = mapWorld("world_icp", "default-obs", false);
+  const auto e = evaluate(map, "default-obs");
+  EXPECT_LE(e["pose_ate_m"].get<double>(), 0.05);
+  std::printf("pose_ate_m %.4f, first-pose aligned %.4f, points within 3 sigma %.4f\n",
+              e["pose_ate_m"].get<double>(), e["pose"]["ate_first_pose_aligned_m"].get<double>(),
+              e["label_check"]["fraction_within_3sigma"].get<double>());
+}
+
+TEST(DefaultWorld, BothRawlogFormatsGiveIdenticalPoints) {
+  const fs::path obs = mapWorld("world_fmt_obs", "default-obs", true);
+  const fs::path sf = mapWorld("world_fmt_sf", "default-sf", true);
+  EXPECT_EQ(fileBytes(obs / "points.ply"), fileBytes(sf / "points.ply"));
+  EXPECT_EQ(fileBytes(obs / "scans.csv"), fileBytes(sf / "scans.csv"));
+}
+
+TEST(DefaultWorld, BothRawlogFormatsGiveTheSameIcpPoses) {
+  const fs::path obs = mapWorld("world_fmt_icp_obs", "default-obs", false);
+  const fs::path sf = mapWorld("world_fmt_icp_sf", "default-sf", false);
+  const PlyVertices a = readPlyVertices(obs / "points.ply");
+  const PlyVertices b = readPlyVertices(sf / "points.ply");
+  ASSERT_EQ(a.size(), b.size());
+  double worst = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      worst = std::max(worst, std::abs(a.columns[k][i] - b.columns[k][i]));
+    }
+    ASSERT_EQ(a.columns[3][i], b.columns[3][i]);
+    ASSERT_EQ(a.columns[4][i], b.columns[4][i]);
+  }
+  std::printf("largest coordinate difference obs vs sf with ICP poses: %.3g m\n", worst);
+  EXPECT_LT(worst, 1e-3);
+}
+
+}  // namespace
+}  // namespace pmap::mapper
