@@ -12,6 +12,9 @@
 #include "pmap/eval/label_check.h"
 #include "pmap/eval/map_files.h"
 #include "pmap/eval/pose_metrics.h"
+#include "pmap/eval/surface_evaluation.h"
+#include "pmap/eval/surface_files.h"
+#include "pmap/eval/surface_report.h"
 #include "pmap/products/json_file.h"
 
 namespace pmap::eval {
@@ -63,6 +66,22 @@ json labelJson(const LabelCheck& c) {
           {"max_m", c.max_m}};
 }
 
+/// The surface keys, when the map has a surfaces.csv (it needs points.ply).
+void addSurfaceEvaluation(const MapEvalArgs& args, const GroundTruth& gt, const MapPoints* points,
+                          const Rigid2D& map_to_gt, json& doc) {
+  const fs::path csv = args.map_dir / "surfaces.csv";
+  if (!fs::exists(csv)) {
+    return;
+  }
+  if (points == nullptr) {
+    throw InputError(csv.string() + ": needs points.ply beside it (the surface ids of the points)");
+  }
+  const std::vector<MapSurface> surfaces = readMapSurfaces(csv);
+  checkSurfaceIds(*points, surfaces, args.map_dir / "points.ply");
+  const SurfaceEvalOptions options;
+  addSurfaceKeys(evaluateSurfaces(gt, *points, surfaces, map_to_gt, options), options, doc);
+}
+
 }  // namespace
 
 json evaluateMap(const MapEvalArgs& args) {
@@ -81,9 +100,12 @@ json evaluateMap(const MapEvalArgs& args) {
   doc["pose_ate_m"] = pe.ate_m;
   doc["pose"] = poseJson(pe);
   const fs::path ply = args.map_dir / "points.ply";
+  std::optional<MapPoints> points;
   if (fs::exists(ply)) {
-    doc["label_check"] = labelJson(checkLabels(gt, readMapPoints(ply), pe.alignment));
+    points = readMapPoints(ply);
+    doc["label_check"] = labelJson(checkLabels(gt, *points, pe.alignment));
   }
+  addSurfaceEvaluation(args, gt, points ? &*points : nullptr, pe.alignment, doc);
   return doc;
 }
 
@@ -105,6 +127,7 @@ int mapEvalMain(int argc, const char* const* argv) {
                     doc["label_check"]["fraction_within_3sigma"].get<double>(),
                     doc["label_check"]["median_m"].get<double>());
       }
+      std::fputs(surfaceReportText(doc).c_str(), stdout);
     }
     return 0;
   } catch (const Error& e) {

@@ -13,6 +13,12 @@ Eigen::Vector3d Rigid2D::apply(const Eigen::Vector3d& p) const {
   return {c * p.x() - s * p.y() + t.x(), s * p.x() + c * p.y() + t.y(), p.z()};
 }
 
+Eigen::Vector3d Rigid2D::rotate(const Eigen::Vector3d& v) const {
+  const double c = std::cos(yaw);
+  const double s = std::sin(yaw);
+  return {c * v.x() - s * v.y(), s * v.x() + c * v.y(), v.z()};
+}
+
 Rigid2D alignRigid2D(const std::vector<Eigen::Vector2d>& a, const std::vector<Eigen::Vector2d>& b) {
   Rigid2D r;
   if (a.empty() || a.size() != b.size()) {

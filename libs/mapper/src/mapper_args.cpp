@@ -53,6 +53,12 @@ std::optional<MapperArgs> parseMapperArgs(int argc, const char* const* argv) {
       "", "poses", "use these poses (poses.txt format) instead of ICP", false, "", "FILE", cmd);
   TCLAP::ValueArg<std::string> out("o", "out", "output directory", false, "planar-mapper-out",
                                    "DIR", cmd);
+  std::vector<std::string> modes = {"offline", "raw"};
+  TCLAP::ValuesConstraint<std::string> mode_values(modes);
+  TCLAP::ValueArg<std::string> mode("", "mode",
+                                    "offline: EM planar map over all measurements (default); "
+                                    "raw: points and the raw polygon map only",
+                                    false, "offline", &mode_values, cmd);
   TCLAP::SwitchArg poses_only("", "poses-only", "only run the pose stage and write poses.txt", cmd);
   TCLAP::ValueArg<long long> from("", "from-index", "first rawlog record to use (as rawlog-edit)",
                                   false, 0, "N", cmd);
@@ -89,6 +95,7 @@ std::optional<MapperArgs> parseMapperArgs(int argc, const char* const* argv) {
   if (!a.cloud.empty() && !rawlog.getValue().empty()) {
     throw ConfigError("usage: --cloud and --rawlog are exclusive");
   }
+  a.mode = mode.getValue();
   a.poses_only = poses_only.getValue();
   a.accept_truncated = accept_truncated.getValue();
   a.quiet = quiet.getValue();

@@ -10,7 +10,7 @@ namespace pmap::mapper {
 namespace {
 
 const std::vector<std::string>& projectSections() {
-  static const std::vector<std::string> s = {"Sensors", "Output"};
+  static const std::vector<std::string> s = {"Sensors", "Output", "PlanarEM"};
   return s;
 }
 
@@ -54,12 +54,54 @@ bool OutputOptions::validate(std::string* why) const {
   return raw_mesh.validate(why);
 }
 
+void PlanarEmSection::load(config::SectionReader& r) {
+  r.read("sigma_m", em.sigma_m);
+  r.read("z_max_m", em.z_max_m);
+  r.read("kappa", em.kappa);
+  r.read("selection_interval", em.selection_interval);
+  r.read("max_new_per_round", em.max_new_per_round);
+  r.read("seed_outlier_probability", em.seed_outlier_probability);
+  r.read("min_support", em.min_support);
+  r.read("min_curvature_radius_m", em.min_curvature_radius_m);
+  r.read("fuse_angle_deg", em.fuse_angle_deg);
+  r.read("fuse_offset_m", em.fuse_offset_m);
+  r.read("fuse_gap_m", em.fuse_gap_m);
+  r.read("split_cell_m", em.split_cell_m);
+  r.read("split_min_offset_m", em.split_min_offset_m);
+  r.read("empty_area_cost", em.empty_area_cost);
+  r.read("max_iterations", em.max_iterations);
+  r.read("convergence_tolerance", em.convergence_tolerance);
+  r.read("convergence_patience", em.convergence_patience);
+  r.read("convergence_absolute_nats", em.convergence_absolute_nats);
+  r.read("min_rows", em.min_rows);
+  r.read("min_gain", em.min_gain);
+  r.read("responsibility_tolerance", em.responsibility_tolerance);
+  r.read("fine_max_edge_m", em.fine_max_edge_m);
+  auto seed = static_cast<std::int64_t>(em.seed);
+  r.read("seed", seed);
+  if (seed < 0) {
+    r.fail("seed", "must be >= 0");
+  }
+  em.seed = static_cast<std::uint64_t>(seed);
+  r.read("threads", em.threads);
+  r.read("cloud_neighbour_radius_m", cloud_neighbour_radius_m);
+}
+
+bool PlanarEmSection::validate(std::string* why) const {
+  if (!(cloud_neighbour_radius_m > 0.0)) {
+    *why = "cloud_neighbour_radius_m must be > 0";
+    return false;
+  }
+  return em.validate(why);
+}
+
 MapperConfig loadMapperConfig(const std::filesystem::path& path) {
   MapperConfig cfg{
-      config::IniDocument::load(path), std::make_shared<config::EffectiveConfig>(), {}, {}};
+      config::IniDocument::load(path), std::make_shared<config::EffectiveConfig>(), {}, {}, {}};
   rejectUnknownSections(cfg.doc);
   config::loadOptions(cfg.doc, "Sensors", cfg.sensors, cfg.effective.get());
   config::loadOptions(cfg.doc, "Output", cfg.output, cfg.effective.get());
+  config::loadOptions(cfg.doc, "PlanarEM", cfg.planar_em, cfg.effective.get());
   return cfg;
 }
 

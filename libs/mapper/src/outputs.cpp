@@ -6,6 +6,7 @@
 #include "pmap/common/atomic_file.h"
 #include "pmap/poses/poses_file.h"
 #include "pmap/products/json_file.h"
+#include "pmap/products/planar_map_files.h"
 #include "pmap/products/point_files.h"
 #include "pmap/products/vrml.h"
 
@@ -36,8 +37,42 @@ json inputSummary(const MapperArgs& args, const MappingResult& r) {
   return in;
 }
 
+json historyJson(const em::EmResult& em) {
+  json h = json::array();
+  for (const em::IterationRecord& rec : em.history) {
+    h.push_back({{"iteration", rec.iteration},
+                 {"surfaces", rec.surfaces},
+                 {"explained_fraction", rec.explained_fraction},
+                 {"log_posterior", rec.log_posterior},
+                 {"changes",
+                  {{"removed", rec.changes.removed},
+                   {"fused", rec.changes.fused},
+                   {"split", rec.changes.split},
+                   {"added", rec.changes.added}}}});
+  }
+  return h;
+}
+
+// Keys of the planar map (doc/outputs.md).
+void addPlanarMap(const MappingResult& r, json& s) {
+  const em::EmResult& em = *r.em;
+  const std::size_t map_triangles = 2 * em.map.surfaces.size() + em.map.fine_triangles.size();
+  s["surfaces"] = em.map.surfaces.size();
+  s["fine_triangles"] = em.map.fine_triangles.size();
+  s["explained_fraction"] = em.map.explained_fraction;
+  s["map_triangles"] = map_triangles;
+  s["compression"] = map_triangles > 0 ? static_cast<double>(r.raw_triangles.size()) /
+                                             static_cast<double>(map_triangles)
+                                       : 0.0;
+  s["iterations"] = em.iterations;
+  s["termination"] = em::toString(em.termination);
+  s["em_message"] = em.message;
+  s["ms_per_iteration"] = em.iterations > 0 ? 1000.0 * r.timing.em_s / em.iterations : 0.0;
+  s["history"] = historyJson(em);
+}
+
 json summaryJson(const MapperArgs& args, const MappingResult& r, double write_s, double total_s) {
-  const double processing_s = r.timing.read_s + r.timing.pose_s + r.timing.map_s;
+  const double processing_s = r.timing.read_s + r.timing.pose_s + r.timing.map_s + r.timing.em_s;
   json s;
   s["input"] = inputSummary(args, r);
   s["scans"] = r.placement.placed;
@@ -55,13 +90,14 @@ json summaryJson(const MapperArgs& args, const MappingResult& r, double write_s,
                 {"odometry_readings", r.pose_stats.odometry_readings},
                 {"non_monotonic", r.pose_stats.non_monotonic}};
   s["duration_s"] = r.duration();
-  s["timing_s"] = {{"total", total_s},
-                   {"read", r.timing.read_s},
-                   {"pose", r.timing.pose_s},
-                   {"map", r.timing.map_s},
-                   {"write", write_s}};
+  s["timing_s"] = {{"total", total_s},      {"read", r.timing.read_s}, {"pose", r.timing.pose_s},
+                   {"map", r.timing.map_s}, {"em", r.timing.em_s},     {"write", write_s}};
+  s["mode"] = args.poses_only ? "poses-only" : args.mode;
+  if (r.em) {
+    addPlanarMap(r, s);
+  }
   // One definition everywhere: recorded duration / wall time of reading,
-  // poses and mapping (writing excluded).
+  // poses and mapping (points, raw map and EM; writing excluded).
   s["realtime_factor"] = processing_s > 0 ? r.duration() / processing_s : 0.0;
   return s;
 }
@@ -91,9 +127,17 @@ void writeOutputs(const MapperConfig& config, const MapperArgs& args, const Mapp
   }
   if (!args.poses_only) {
     products::writeScansCsv(args.out / "scans.csv", r.map);
-    products::writePointsPly(args.out / "points.ply", r.map, {});
+    products::writePointsPly(args.out / "points.ply", r.map,
+                             r.em ? products::surfaceIdsOfPoints(r.em->map) : std::vector<int>{});
     if (config.output.raw_map) {
       writeRawMap(args.out / "raw.wrl", r);
+    }
+    if (r.em) {
+      products::writeSurfacesCsv(args.out / "surfaces.csv", r.em->map.surfaces);
+      products::writeVrml(args.out / "map.wrl", products::planarMapMeshes(r.em->map, r.map.xyz()),
+                          "planar-mapper map: " + std::to_string(r.em->map.surfaces.size()) +
+                              " rectangles, " + std::to_string(r.em->map.fine_triangles.size()) +
+                              " fine triangles");
     }
   }
   const double write_s =

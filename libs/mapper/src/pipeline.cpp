@@ -9,6 +9,7 @@
 #include "pmap/config/strict_mrpt_config.h"
 #include "pmap/input/ply_cloud.h"
 #include "pmap/input/rawlog_reader.h"
+#include "pmap/points/neighbour_graph.h"
 #include "pmap/points/raw_mesh.h"
 #include "pmap/poses/pose_stage.h"
 #include "pmap/poses/poses_file.h"
@@ -177,14 +178,27 @@ MappingResult runCloud(const MapperArgs& args) {
   return result;
 }
 
+void runEm(const MapperConfig& config, MappingResult& result) {
+  const auto t0 = Clock::now();
+  const points::NeighbourGraph graph =
+      points::neighbourGraph(result.map, config.planar_em.cloud_neighbour_radius_m);
+  result.em =
+      em::OfflineEm(config.planar_em.em).run(result.map.xyz(), graph.neighbours, graph.rows);
+  result.timing.em_s = since(t0);
+}
+
 }  // namespace
 
 MappingResult runPipeline(const MapperConfig& config, const MapperArgs& args) {
-  if (!args.cloud.empty()) {
-    return runCloud(args);
-  }
   MappingResult result;
-  RawlogRun(config, args, result).run();
+  if (!args.cloud.empty()) {
+    result = runCloud(args);
+  } else {
+    RawlogRun(config, args, result).run();
+  }
+  if (args.mode == "offline" && !args.poses_only) {
+    runEm(config, result);
+  }
   return result;
 }
 

@@ -29,6 +29,11 @@ void PlanarMapperApp::run() {
     std::fprintf(stderr, "planar-mapper: %zu scans, %zu points, %zu raw triangles -> %s\n",
                  result.placement.placed, result.map.size(), result.raw_triangles.size(),
                  args_->out.c_str());
+    if (result.em) {
+      std::fprintf(stderr, "planar-mapper: EM %s; explained %.1f %%, %zu fine triangles\n",
+                   result.em->message.c_str(), 100.0 * result.em->map.explained_fraction,
+                   result.em->map.fine_triangles.size());
+    }
     if (!result.truncation.empty()) {
       std::fprintf(stderr, "planar-mapper: warning: %s (accepted)\n", result.truncation.c_str());
     }

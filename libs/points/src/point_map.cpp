@@ -20,6 +20,9 @@ std::size_t PointMap::addScan(const input::StructureScan& scan,
   record.sensor_pose = (robot + mrpt::poses::CPose3D(scan.sensor_pose)).asTPose();
   record.first_point = xyz_.size();
   record.num_points = scan.points.size();
+  record.rows = scan.rows;
+  record.cols = scan.cols;
+  record.organised = scan.organised;
 
   xyz_.reserve(xyz_.size() + scan.points.size());
   for (size_t i = 0; i < scan.points.size(); ++i) {

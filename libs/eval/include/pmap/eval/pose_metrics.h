@@ -13,6 +13,8 @@ struct Rigid2D {
   double yaw = 0;
   Eigen::Vector2d t = Eigen::Vector2d::Zero();
   Eigen::Vector3d apply(const Eigen::Vector3d& p) const;
+  /// The rotation only (for directions such as normals).
+  Eigen::Vector3d rotate(const Eigen::Vector3d& v) const;
   double applyYaw(double y) const { return y + yaw; }
 };
 

@@ -17,6 +17,9 @@ struct MapperArgs {
   std::filesystem::path cloud;   ///< --cloud FILE.ply instead of a rawlog
   std::filesystem::path poses;   ///< --poses FILE: given poses instead of ICP
   std::filesystem::path out = "planar-mapper-out";
+  /// offline: EM over all measurements at the end; raw: points and the raw
+  /// map only.
+  std::string mode = "offline";
   bool poses_only = false;
   bool accept_truncated = false;
   bool quiet = false;  ///< no progress line

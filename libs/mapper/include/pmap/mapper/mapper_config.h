@@ -10,6 +10,7 @@
 
 #include "pmap/config/effective_config.h"
 #include "pmap/config/ini_document.h"
+#include "pmap/em/planar_em_options.h"
 #include "pmap/input/sensor_roles.h"
 #include "pmap/points/raw_mesh.h"
 
@@ -27,11 +28,21 @@ struct OutputOptions {
   bool validate(std::string* why) const;
 };
 
+/// [PlanarEM]: the EM options (libs/em, which knows nothing of ini files)
+/// plus how neighbours are found in unorganised clouds.
+struct PlanarEmSection {
+  em::PlanarEmOptions em;
+  double cloud_neighbour_radius_m = 0.15;  ///< nearest-neighbour radius for clouds (m)
+  void load(config::SectionReader& reader);
+  bool validate(std::string* why) const;
+};
+
 struct MapperConfig {
   config::IniDocument doc;
   std::shared_ptr<config::EffectiveConfig> effective;
   input::SensorsOptions sensors;
   OutputOptions output;
+  PlanarEmSection planar_em;
 };
 
 /// Loads and validates the project's sections; rejects sections nobody owns.

@@ -6,9 +6,11 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "pmap/em/offline_em.h"
 #include "pmap/input/observation_source.h"
 #include "pmap/input/structure_points.h"
 #include "pmap/mapper/mapper_args.h"
@@ -24,6 +26,7 @@ struct StageTiming {
   double read_s = 0;  ///< decoding the rawlog
   double pose_s = 0;  ///< ICP and pose handling
   double map_s = 0;   ///< extracting, placing and meshing points
+  double em_s = 0;    ///< the EM planar mapper
 };
 
 struct MappingResult {
@@ -39,7 +42,8 @@ struct MappingResult {
   double first_time = 0;           ///< recorded span of the selected observations (s)
   double last_time = 0;
   StageTiming timing;
-  std::string truncation;  ///< non-empty: accepted truncation message
+  std::string truncation;          ///< non-empty: accepted truncation message
+  std::optional<em::EmResult> em;  ///< the planar map (mode offline)
   double duration() const { return last_time > first_time ? last_time - first_time : 0.0; }
 };
 

@@ -23,6 +23,9 @@ struct ScanRecord {
   mrpt::math::TPose3D sensor_pose;  ///< world (robot pose + sensor pose on the robot)
   std::size_t first_point = 0;      ///< range in PointMap
   std::size_t num_points = 0;
+  int rows = 1;  ///< measurement grid (see input::StructureScan)
+  int cols = 0;
+  bool organised = true;
 };
 
 class PointMap {

@@ -1,0 +1,90 @@
+// One round of model selection (eq. 30): remove, fuse and split surfaces
+// when that raises the log posterior, then seed new ones.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+#include <random>
+#include <vector>
+
+#include "pmap/em/measurement_model.h"
+#include "pmap/em/neighbours.h"
+#include "pmap/em/planar_em_options.h"
+#include "pmap/em/point_grid.h"
+#include "pmap/em/responsibilities.h"
+#include "pmap/em/split_proposals.h"
+#include "pmap/em/surface.h"
+
+namespace pmap::em {
+
+struct SelectionChanges {
+  int removed = 0;
+  int fused = 0;
+  int split = 0;
+  int added = 0;
+  bool any() const { return removed + fused + split + added > 0; }
+};
+
+class ModelSelector {
+ public:
+  /// `rows` (may be empty): each point's row (scan) for the min_rows test.
+  ModelSelector(const std::vector<Eigen::Vector3d>& points, const Neighbours& neighbours,
+                const std::vector<std::int32_t>& rows, const PlanarEmOptions& options);
+
+  /// Runs a round on `surfaces`; `next_id` gives ids to new surfaces.
+  SelectionChanges round(std::vector<Surface>& surfaces, std::int32_t& next_id);
+
+  /// Removes the surfaces that are invalid or whose removal raises the log
+  /// posterior (the removal step of a round alone); returns how many.
+  int prune(std::vector<Surface>& surfaces);
+
+  /// E-step on `surfaces` with this selector's index settings.
+  void expect(const std::vector<Surface>& surfaces, Responsibilities& resp) const;
+
+  const MeasurementModel& model() const { return model_; }
+  double cutoff() const { return cutoff_; }
+
+ private:
+  int removeSurfaces(std::vector<Surface>& surfaces, Responsibilities& resp);
+  int fuseSurfaces(std::vector<Surface>& surfaces, Responsibilities& resp, std::int32_t& next_id);
+  int splitSurfaces(std::vector<Surface>& surfaces, Responsibilities& resp, std::int32_t& next_id);
+  int seed(std::vector<Surface>& surfaces, const Responsibilities& resp, std::int32_t& next_id);
+
+  /// Fits `rect` to `members` and checks it is a valid surface.
+  bool acceptablePart(const std::vector<std::int32_t>& members, Rectangle& rect) const;
+  /// Support, rows seen and planarity of a fitted surface.
+  bool validSurface(const std::vector<std::int32_t>& members, const Rectangle& rect) const;
+  double emptyCost(const std::vector<std::int32_t>& members, const Rectangle& rect) const;
+  struct Recut {
+    SplitProposal parts;
+    std::vector<Rectangle> rects;
+  };
+  /// The union of two coplanar surfaces cut again into two rectangles, when
+  /// the larger one grows clearly beyond `current_larger` points.
+  std::optional<Recut> recutPair(const std::vector<std::int32_t>& both, const Rectangle& frame,
+                                 std::size_t current_larger) const;
+  /// The rectangles `parts` (replacing surface j) after one hard
+  /// reassignment of the `affected` points and a coherent rectangle refit,
+  /// i.e. where the next M-step would take them; `members` gets their points.
+  std::vector<Rectangle> settleParts(std::size_t j, const std::vector<Rectangle>& parts,
+                                     const std::vector<std::int32_t>& affected,
+                                     const Responsibilities& resp,
+                                     std::vector<std::vector<std::int32_t>>& members) const;
+  /// Per member of surface j: how much worse it is scored without j.
+  std::vector<double> memberLoss(const Responsibilities& resp, std::size_t j,
+                                 const std::vector<std::int32_t>& members) const;
+
+  const std::vector<Eigen::Vector3d>& points_;
+  const Neighbours& neighbours_;
+  const std::vector<std::int32_t>& rows_;
+  PlanarEmOptions options_;
+  MeasurementModel model_;
+  double cutoff_;
+  PointGrid grid_;
+  /// Points of surfaces removed as curved (a bin): not seeded again.
+  std::vector<char> not_planar_;
+  std::mt19937_64 rng_;
+};
+
+}  // namespace pmap::em

@@ -1,0 +1,70 @@
+// The offline EM planar mapper (sections II-IV): alternates the E-step
+// (eqs. 17-18) and the M-step (eqs. 19-29) over all measurements, with model
+// selection (eq. 30) every `selection_interval` iterations, until converged:
+// no model-selection change in the last round and a relative change of the
+// log posterior below `convergence_tolerance` for `convergence_patience`
+// iterations in a row.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "pmap/em/fine_triangles.h"
+#include "pmap/em/model_selector.h"
+#include "pmap/em/neighbours.h"
+#include "pmap/em/planar_em_options.h"
+#include "pmap/em/surface.h"
+
+namespace pmap::em {
+
+struct IterationRecord {
+  int iteration = 0;
+  int surfaces = 0;
+  double explained_fraction = 0.0;  ///< share of points whose most likely cause is a surface
+  double log_posterior = 0.0;       ///< of the map entering this iteration (eq. 30)
+  double log_likelihood = 0.0;      ///< sum_i l_i (prior held fixed)
+  SelectionChanges changes;         ///< model selection made before this iteration's E-step
+};
+
+enum class Termination { kConverged, kMaxIterations, kNoPoints };
+const char* toString(Termination t);
+
+struct PlanarMap {
+  std::vector<Surface> surfaces;
+  std::vector<std::int32_t> assignment;  ///< per point: index into surfaces, -1 = outlier class
+  std::vector<Triangle> fine_triangles;  ///< over outlier points
+  double explained_fraction = 0.0;
+};
+
+struct EmResult {
+  PlanarMap map;
+  Termination termination = Termination::kNoPoints;
+  int iterations = 0;
+  std::vector<IterationRecord> history;
+  std::string message;
+};
+
+class OfflineEm {
+ public:
+  /// `options` must validate.
+  explicit OfflineEm(const PlanarEmOptions& options);
+
+  /// Maps `points` (finite). `initial` surfaces start the EM (none: all from
+  /// seeding). Same input, options and seed give the same map whatever
+  /// options.threads is.
+  /// `rows` (may be empty): each point's row (scan), for the min_rows test.
+  EmResult run(const std::vector<Eigen::Vector3d>& points, const Neighbours& neighbours,
+               const std::vector<std::int32_t>& rows, std::vector<Surface> initial = {}) const;
+
+ private:
+  PlanarEmOptions options_;
+};
+
+/// The final assignment, explained fraction and fine triangles of `surfaces`.
+PlanarMap finalizeMap(const std::vector<Eigen::Vector3d>& points, const Neighbours& neighbours,
+                      std::vector<Surface> surfaces, const ModelSelector& selector,
+                      const PlanarEmOptions& options);
+
+}  // namespace pmap::em

@@ -1,0 +1,30 @@
+// Is a set of points a plane or a curved object? A plane laid on a bin
+// explains a band of points up to the outlier distance and gains likelihood,
+// so likelihood and the penalty kappa alone do not reject it. The Gaussian
+// model says a surface's residuals are noise; a bin's are a systematic
+// curve. This test fits h = a u^2 + b uv + c v^2 + d u + e v + f to the
+// points' heights h above the plane; when the quadratic explains a real part
+// of the residual variance, its principal curvatures measure the bending.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "pmap/em/rectangle.h"
+
+namespace pmap::em {
+
+struct Planarity {
+  double curvature_radius_m = 0.0;  ///< 1 / largest |principal curvature|; inf if flat
+  double variance_explained = 0.0;  ///< share of the residual variance the quadratic explains
+};
+
+Planarity measurePlanarity(const std::vector<Eigen::Vector3d>& points,
+                           const std::vector<std::int32_t>& members, const Rectangle& rect);
+
+/// True when the points bend with a radius below `min_radius_m` and the bend
+/// explains at least 25 % of the residual variance.
+bool isCurved(const Planarity& p, double min_radius_m);
+
+}  // namespace pmap::em

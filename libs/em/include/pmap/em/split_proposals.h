@@ -1,0 +1,56 @@
+// Beyond the paper: tests that propose splitting one surface in two.
+//  - Residual patches: a door recessed less than the outlier distance
+//    (MODEL.md) stays "explained" by its wall, so the paper's seeding never
+//    separates it; but on a grid over the wall the door's cells share a mean
+//    residual clearly off the wall plane. Those cells, if connected, form one
+//    part.
+//  - Coverage: a rectangle whose points cover an L (a ceiling over a corner)
+//    is cut in two; a rectangle stretched by a sparse appendage (a vertical
+//    scan that happened to lie in a wall's plane) is trimmed back.
+// A proposal is only a partition; the selector fits both parts and keeps the
+// split when it raises the log posterior.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "pmap/em/rectangle.h"
+
+namespace pmap::em {
+
+struct SplitProposal {
+  std::vector<std::int32_t> part_a;
+  std::vector<std::int32_t> part_b;
+};
+
+/// Residual-patch split of `members` (the surface's hard points).
+std::optional<SplitProposal> residualSplit(const std::vector<Eigen::Vector3d>& points,
+                                           const std::vector<std::int32_t>& members,
+                                           const Rectangle& rect, double cell_m,
+                                           double min_offset_m, double sigma, std::size_t min_part);
+
+/// What a coverage cut keeps.
+enum class CutKeep { kBoth, kPartA, kPartB };
+
+struct CoverageCut {
+  SplitProposal parts;
+  CutKeep keep = CutKeep::kBoth;
+  double estimated_gain = 0.0;  ///< from the grid estimate, before refitting
+};
+
+/// Coverage cut of `members` along one of the rectangle's axes, chosen on a
+/// grid of `cell_m` for the largest estimated log-posterior gain: keeping
+/// both parts saves empty area at the price of kappa; keeping one part (a
+/// trim) saves more empty area at the price of the dropped points' loss
+/// (`member_loss[k]`: how much worse member k is explained without this
+/// surface, >= 0). Without `allow_trims` only cuts keeping both parts are
+/// considered. None when no cut gains.
+std::optional<CoverageCut> coverageCut(const std::vector<Eigen::Vector3d>& points,
+                                       const std::vector<std::int32_t>& members,
+                                       const std::vector<double>& member_loss,
+                                       const Rectangle& rect, double cell_m, double empty_area_cost,
+                                       double kappa, std::size_t min_part, bool allow_trims);
+
+}  // namespace pmap::em

@@ -1,0 +1,139 @@
+#include "pmap/em/min_area_rectangle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace pmap::em {
+namespace {
+
+double cross(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+}
+
+// The bounding box of `pts` in the frame (axis, perp(axis)).
+Rect2D boxAlong(const std::vector<Eigen::Vector2d>& pts, const Eigen::Vector2d& axis) {
+  const Eigen::Vector2d perp(-axis.y(), axis.x());
+  double amin = std::numeric_limits<double>::infinity();
+  double amax = -amin;
+  double bmin = amin;
+  double bmax = -amin;
+  for (const auto& p : pts) {
+    const double a = axis.dot(p);
+    const double b = perp.dot(p);
+    amin = std::min(amin, a);
+    amax = std::max(amax, a);
+    bmin = std::min(bmin, b);
+    bmax = std::max(bmax, b);
+  }
+  Rect2D r;
+  r.axis = axis;
+  r.half_a = 0.5 * (amax - amin);
+  r.half_b = 0.5 * (bmax - bmin);
+  r.centre = axis * (0.5 * (amin + amax)) + perp * (0.5 * (bmin + bmax));
+  return r;
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector2d> convexHull(std::vector<Eigen::Vector2d> p) {
+  std::sort(p.begin(), p.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  p.erase(std::unique(p.begin(), p.end()), p.end());
+  if (p.size() < 3) {
+    return p;
+  }
+  std::vector<Eigen::Vector2d> hull(2 * p.size());
+  size_t k = 0;
+  for (size_t i = 0; i < p.size(); ++i) {  // lower hull
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) {
+      --k;
+    }
+    hull[k++] = p[i];
+  }
+  for (size_t i = p.size() - 1, t = k + 1; i-- > 0;) {  // upper hull
+    while (k >= t && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) {
+      --k;
+    }
+    hull[k++] = p[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+Rect2D minAreaRectangle(const std::vector<Eigen::Vector2d>& points) {
+  if (points.empty()) {
+    return {};
+  }
+  const std::vector<Eigen::Vector2d> hull = convexHull(points);
+  if (hull.size() == 1) {
+    Rect2D r;
+    r.centre = hull[0];
+    return r;
+  }
+  if (hull.size() == 2) {
+    return boxAlong(hull, (hull[1] - hull[0]).normalized());
+  }
+  // One side of the optimum lies on a hull edge. Rotating calipers: for each
+  // edge i (direction e, inward normal n), the extreme hull vertices along +e,
+  // -e and n only move forward around the hull as i advances.
+  const size_t h = hull.size();
+  auto at = [&](size_t k) -> const Eigen::Vector2d& { return hull[k % h]; };
+  size_t right = 0;
+  size_t top = 0;
+  size_t left = 0;
+  Rect2D best;
+  double best_area = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < h; ++i) {
+    const Eigen::Vector2d e = (at(i + 1) - at(i)).normalized();
+    const Eigen::Vector2d n(-e.y(), e.x());
+    if (i == 0) {
+      right = top = left = 0;
+    }
+    right = std::max(right, i);
+    while (e.dot(at(right + 1)) > e.dot(at(right)) + 1e-15) {
+      ++right;
+    }
+    top = std::max(top, right);
+    while (n.dot(at(top + 1)) > n.dot(at(top)) + 1e-15) {
+      ++top;
+    }
+    left = std::max(left, top);
+    while (e.dot(at(left + 1)) < e.dot(at(left)) - 1e-15) {
+      ++left;
+    }
+    const double a0 = e.dot(at(left));
+    const double a1 = e.dot(at(right));
+    const double b0 = n.dot(at(i));
+    const double b1 = n.dot(at(top));
+    const double area = (a1 - a0) * (b1 - b0);
+    if (area < best_area) {
+      best_area = area;
+      best.axis = e;
+      best.half_a = 0.5 * (a1 - a0);
+      best.half_b = 0.5 * (b1 - b0);
+      best.centre = e * (0.5 * (a0 + a1)) + n * (0.5 * (b0 + b1));
+    }
+  }
+  return best;
+}
+
+Rect2D probedMinAreaRectangle(const std::vector<Eigen::Vector2d>& points, double step_deg) {
+  if (points.empty()) {
+    return {};
+  }
+  Rect2D best;
+  double best_area = std::numeric_limits<double>::infinity();
+  for (double deg = 0.0; deg < 90.0; deg += step_deg) {
+    const double a = deg * M_PI / 180.0;
+    const Rect2D r = boxAlong(points, Eigen::Vector2d(std::cos(a), std::sin(a)));
+    if (r.area() < best_area) {
+      best_area = r.area();
+      best = r;
+    }
+  }
+  return best;
+}
+
+}  // namespace pmap::em

@@ -1,0 +1,467 @@
+#include "pmap/em/model_selector.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "pmap/em/model_selection.h"
+#include "pmap/em/planarity.h"
+#include "pmap/em/rectangle_index.h"
+#include "pmap/em/seeding.h"
+#include "pmap/em/split_proposals.h"
+#include "pmap/em/surface_fit.h"
+
+namespace pmap::em {
+namespace {
+
+// Points whose E-step entries list surface j.
+std::vector<std::vector<std::int32_t>> entryPoints(const Responsibilities& resp, std::size_t J) {
+  std::vector<std::vector<std::int32_t>> out(J);
+  for (std::size_t i = 0; i < resp.points(); ++i) {
+    for (std::uint32_t k = resp.offsets[i]; k < resp.offsets[i + 1]; ++k) {
+      out[static_cast<std::size_t>(resp.surface[k])].push_back(static_cast<std::int32_t>(i));
+    }
+  }
+  return out;
+}
+
+// Change of the summed point scores if each surface alone were removed: the
+// score of each of its points without it minus with it (recomputed from the
+// other terms: exact even when the surface explains a point almost alone).
+std::vector<double> removalChanges(const Responsibilities& resp, double s_star, std::size_t J,
+                                   PlanarEmOptions::Scoring scoring) {
+  std::vector<double> change(J, 0.0);
+  for (std::size_t i = 0; i < resp.points(); ++i) {
+    const double with = pointScore(resp, i, s_star, scoring);
+    for (std::uint32_t k = resp.offsets[i]; k < resp.offsets[i + 1]; ++k) {
+      change[static_cast<std::size_t>(resp.surface[k])] +=
+          pointScore(resp, i, s_star, scoring, k) - with;
+    }
+  }
+  return change;
+}
+
+double rectangleGap(const Rectangle& a, const Rectangle& b) {
+  double gap2 = std::min(a.squaredDistance(b.centre), b.squaredDistance(a.centre));
+  for (const auto& c : a.corners()) {
+    gap2 = std::min(gap2, b.squaredDistance(c));
+  }
+  for (const auto& c : b.corners()) {
+    gap2 = std::min(gap2, a.squaredDistance(c));
+  }
+  return std::sqrt(gap2);
+}
+
+}  // namespace
+
+ModelSelector::ModelSelector(const std::vector<Eigen::Vector3d>& points,
+                             const Neighbours& neighbours, const std::vector<std::int32_t>& rows,
+                             const PlanarEmOptions& options)
+    : points_(points),
+      neighbours_(neighbours),
+      rows_(rows),
+      options_(options),
+      model_(options.sigma_m, options.z_max_m),
+      cutoff_(model_.cutoffDistance(options.responsibility_tolerance)),
+      grid_(points, std::max(0.5, 4.0 * cutoff_)),
+      not_planar_(points.size(), 0),
+      rng_(options.seed) {}
+
+void ModelSelector::expect(const std::vector<Surface>& surfaces, Responsibilities& resp) const {
+  const RectangleIndex index(surfaces, cutoff_);
+  computeResponsibilities(points_, surfaces, index, model_, options_.responsibility_tolerance,
+                          options_.threads, resp);
+}
+
+double ModelSelector::emptyCost(const std::vector<std::int32_t>& members,
+                                const Rectangle& rect) const {
+  return options_.empty_area_cost * emptyArea(points_, members, rect, options_.split_cell_m);
+}
+
+bool ModelSelector::validSurface(const std::vector<std::int32_t>& members,
+                                 const Rectangle& rect) const {
+  return members.size() >= static_cast<std::size_t>(options_.min_support) &&
+         (rows_.empty() ||
+          distinctRows(rows_, members) >= static_cast<std::size_t>(options_.min_rows)) &&
+         !isCurved(measurePlanarity(points_, members, rect), options_.min_curvature_radius_m);
+}
+
+bool ModelSelector::acceptablePart(const std::vector<std::int32_t>& members,
+                                   Rectangle& rect) const {
+  return members.size() >= static_cast<std::size_t>(options_.min_support) &&
+         fitSurface(points_, members, rect) == FitStatus::kOk && validSurface(members, rect);
+}
+
+int ModelSelector::removeSurfaces(std::vector<Surface>& surfaces, Responsibilities& resp) {
+  int removed = 0;
+  for (int pass = 0; pass < 4 && !surfaces.empty(); ++pass) {
+    const std::size_t J = surfaces.size();
+    const auto members = hardMembers(resp, J);
+    const auto entries = entryPoints(resp, J);
+    const std::vector<double> change =
+        removalChanges(resp, model_.outlierScore(), J, options_.selection_scoring);
+    std::vector<std::pair<double, std::size_t>> order;
+    for (std::size_t j = 0; j < J; ++j) {
+      const bool invalid = !validSurface(members[j], surfaces[j].rect);
+      if (isCurved(measurePlanarity(points_, members[j], surfaces[j].rect),
+                   options_.min_curvature_radius_m)) {
+        for (const std::int32_t i : members[j]) {
+          not_planar_[static_cast<std::size_t>(i)] = 1;  // never seed here again
+        }
+      }
+      const double gain = change[j] + options_.kappa + emptyCost(members[j], surfaces[j].rect);
+      if (invalid || gain > options_.min_gain) {
+        order.emplace_back(invalid ? std::numeric_limits<double>::infinity() : gain, j);
+      }
+    }
+    std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
+      return a.first > b.first || (a.first == b.first && a.second < b.second);
+    });
+    // Removals scored alone interact through shared points: take only
+    // surfaces whose points no other removal of this pass touches.
+    std::vector<char> claimed(points_.size(), 0);
+    std::vector<char> drop(J, 0);
+    for (const auto& [gain, j] : order) {
+      const bool free = std::none_of(entries[j].begin(), entries[j].end(),
+                                     [&](std::int32_t i) { return claimed[i] != 0; });
+      if (free || std::isinf(gain)) {
+        drop[j] = 1;
+        for (const std::int32_t i : entries[j]) {
+          claimed[i] = 1;
+        }
+      }
+    }
+    std::vector<Surface> kept;
+    for (std::size_t j = 0; j < J; ++j) {
+      if (!drop[j]) {
+        kept.push_back(surfaces[j]);
+      }
+    }
+    const int n = static_cast<int>(J - kept.size());
+    if (n == 0) {
+      break;
+    }
+    removed += n;
+    surfaces = std::move(kept);
+    expect(surfaces, resp);
+  }
+  return removed;
+}
+
+// Fusion of two surfaces that are the same plane (when that raises the log
+// posterior), or else their re-cut: coplanar neighbours forming an L are cut
+// again where the larger rectangle is largest (a canonical form: a wall or
+// ceiling runs through the corner), when that costs no more than min_gain.
+int ModelSelector::fuseSurfaces(std::vector<Surface>& surfaces, Responsibilities& resp,
+                                std::int32_t& next_id) {
+  const std::size_t J = surfaces.size();
+  const auto members = hardMembers(resp, J);
+  const double cos_max = std::cos(options_.fuse_angle_deg * M_PI / 180.0);
+  struct Candidate {
+    double priority;
+    std::size_t j, k;
+    std::vector<Rectangle> replacement;
+  };
+  std::vector<Candidate> cands;
+  for (std::size_t j = 0; j < J; ++j) {
+    for (std::size_t k = j + 1; k < J; ++k) {
+      const Rectangle& a = surfaces[j].rect;
+      const Rectangle& b = surfaces[k].rect;
+      if (std::abs(a.normal.dot(b.normal)) < cos_max ||
+          std::abs(a.planeDistance(b.centre)) > options_.fuse_offset_m ||
+          std::abs(b.planeDistance(a.centre)) > options_.fuse_offset_m ||
+          rectangleGap(a, b) > options_.fuse_gap_m + options_.fuse_offset_m) {
+        continue;
+      }
+      const std::vector<std::int32_t> both = unionOf({members[j], members[k]});
+      Rectangle m = surfaces[members[j].size() >= members[k].size() ? j : k].rect;
+      if (!acceptablePart(both, m)) {
+        continue;
+      }
+      const double before = emptyCost(members[j], a) + emptyCost(members[k], b);
+      auto gainOf = [&](const std::vector<Rectangle>& rects, double empty_after) {
+        std::vector<std::vector<std::int32_t>> near = {pointsNear(grid_, points_, a, cutoff_),
+                                                       pointsNear(grid_, points_, b, cutoff_)};
+        for (const Rectangle& r : rects) {
+          near.push_back(pointsNear(grid_, points_, r, cutoff_));
+        }
+        return logLikelihoodChange(points_, resp, model_, unionOf(near),
+                                   {static_cast<std::int32_t>(j), static_cast<std::int32_t>(k)},
+                                   rects, options_.responsibility_tolerance,
+                                   options_.selection_scoring) +
+               before - empty_after;
+      };
+      const double fuse_gain = gainOf({m}, emptyCost(both, m)) + options_.kappa;
+      if (fuse_gain > options_.min_gain) {
+        cands.push_back({1e12 + fuse_gain, j, k, {m}});
+        continue;
+      }
+      if (auto recut = recutPair(both, m, std::max(members[j].size(), members[k].size()))) {
+        const double gain =
+            gainOf(recut->rects, emptyCost(recut->parts.part_a, recut->rects[0]) +
+                                     emptyCost(recut->parts.part_b, recut->rects[1]));
+        if (gain > -options_.min_gain) {
+          cands.push_back({gain, j, k, recut->rects});
+        }
+      }
+    }
+  }
+  std::sort(cands.begin(), cands.end(), [](const Candidate& x, const Candidate& y) {
+    return x.priority > y.priority ||
+           (x.priority == y.priority && (x.j < y.j || (x.j == y.j && x.k < y.k)));
+  });
+  std::vector<char> used(J, 0);
+  std::vector<char> drop(J, 0);
+  int changed = 0;
+  for (const Candidate& c : cands) {
+    if (used[c.j] || used[c.k]) {
+      continue;
+    }
+    used[c.j] = used[c.k] = 1;
+    surfaces[c.j].rect = c.replacement[0];
+    surfaces[c.j].id = next_id++;
+    if (c.replacement.size() > 1) {
+      surfaces[c.k].rect = c.replacement[1];
+      surfaces[c.k].id = next_id++;
+    } else {
+      drop[c.k] = 1;
+    }
+    ++changed;
+  }
+  if (changed > 0) {
+    std::vector<Surface> kept;
+    for (std::size_t j = 0; j < J; ++j) {
+      if (!drop[j]) {
+        kept.push_back(surfaces[j]);
+      }
+    }
+    surfaces = std::move(kept);
+    expect(surfaces, resp);
+  }
+  return changed;
+}
+
+std::optional<ModelSelector::Recut> ModelSelector::recutPair(const std::vector<std::int32_t>& both,
+                                                             const Rectangle& frame,
+                                                             std::size_t current_larger) const {
+  const std::vector<double> no_loss(both.size(), 0.0);
+  const auto cut = coverageCut(points_, both, no_loss, frame, options_.split_cell_m, 1.0, 0.0,
+                               static_cast<std::size_t>(options_.min_support), false);
+  if (!cut || cut->keep != CutKeep::kBoth) {
+    return std::nullopt;
+  }
+  const std::size_t larger = std::max(cut->parts.part_a.size(), cut->parts.part_b.size());
+  if (larger * 100 <= current_larger * 105) {  // not clearly more canonical
+    return std::nullopt;
+  }
+  Recut r{cut->parts, {frame, frame}};
+  if (!acceptablePart(r.parts.part_a, r.rects[0]) || !acceptablePart(r.parts.part_b, r.rects[1])) {
+    return std::nullopt;
+  }
+  return r;
+}
+
+std::vector<Rectangle> ModelSelector::settleParts(
+    std::size_t j, const std::vector<Rectangle>& parts, const std::vector<std::int32_t>& affected,
+    const Responsibilities& resp, std::vector<std::vector<std::int32_t>>& members) const {
+  // New most likely causes of the affected points: the remaining surfaces'
+  // terms and the parts (encoded as -2 - k; -1 is the outlier class).
+  std::unordered_map<std::int32_t, std::int32_t> new_best;
+  const double s_star = model_.outlierScore();
+  for (const std::int32_t i : affected) {
+    const auto p = static_cast<std::size_t>(i);
+    double best = s_star;
+    std::int32_t cause = -1;
+    for (std::uint32_t k = resp.offsets[p]; k < resp.offsets[p + 1]; ++k) {
+      if (resp.surface[k] != static_cast<std::int32_t>(j) && resp.score[k] > best) {
+        best = resp.score[k];
+        cause = resp.surface[k];
+      }
+    }
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      const double s = model_.surfaceScore(parts[k].squaredDistance(points_[p]));
+      if (s > best) {
+        best = s;
+        cause = -2 - static_cast<std::int32_t>(k);
+      }
+    }
+    new_best[i] = cause;
+  }
+  std::vector<std::int32_t> best = resp.best;
+  for (std::int32_t& b : best) {
+    b = b == static_cast<std::int32_t>(j) ? -1 : b;
+  }
+  members.assign(parts.size(), {});
+  for (const auto& [i, cause] : new_best) {
+    best[static_cast<std::size_t>(i)] = cause;
+    if (cause <= -2) {
+      members[static_cast<std::size_t>(-2 - cause)].push_back(i);
+    }
+  }
+  std::vector<Rectangle> settled = parts;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    std::sort(members[k].begin(), members[k].end());
+    if (members[k].size() >= 3) {
+      fitRectangle(points_, coherentMembers(members[k], neighbours_, best, 2), settled[k]);
+    }
+  }
+  return settled;
+}
+
+std::vector<double> ModelSelector::memberLoss(const Responsibilities& resp, std::size_t j,
+                                              const std::vector<std::int32_t>& members) const {
+  std::vector<double> loss;
+  loss.reserve(members.size());
+  const double s_star = model_.outlierScore();
+  for (const std::int32_t m : members) {
+    const auto i = static_cast<std::size_t>(m);
+    std::int64_t entry = -1;
+    for (std::uint32_t k = resp.offsets[i]; k < resp.offsets[i + 1]; ++k) {
+      if (resp.surface[k] == static_cast<std::int32_t>(j)) {
+        entry = k;
+      }
+    }
+    loss.push_back(pointScore(resp, i, s_star, options_.selection_scoring) -
+                   pointScore(resp, i, s_star, options_.selection_scoring, entry));
+  }
+  return loss;
+}
+
+int ModelSelector::splitSurfaces(std::vector<Surface>& surfaces, Responsibilities& resp,
+                                 std::int32_t& next_id) {
+  const std::size_t J = surfaces.size();
+  const auto members = hardMembers(resp, J);
+  const auto min_part = static_cast<std::size_t>(options_.min_support);
+  std::vector<Surface> added;
+  int split = 0;
+  for (std::size_t j = 0; j < J; ++j) {
+    const Rectangle rect = surfaces[j].rect;
+    // Candidate replacements of surface j: two parts, or one part (a trim:
+    // the other part's points are left to whatever else explains them).
+    std::vector<std::vector<std::vector<std::int32_t>>> options;
+    if (auto p = residualSplit(points_, members[j], rect, options_.split_cell_m,
+                               options_.split_min_offset_m, model_.sigma(), min_part)) {
+      options.push_back({p->part_a, p->part_b});
+    }
+    if (auto cut = coverageCut(points_, members[j], memberLoss(resp, j, members[j]), rect,
+                               options_.split_cell_m, options_.empty_area_cost, options_.kappa,
+                               min_part, true)) {
+      switch (cut->keep) {
+        case CutKeep::kBoth:
+          options.push_back({cut->parts.part_a, cut->parts.part_b});
+          break;
+        case CutKeep::kPartA:
+          if (!surfaces[j].trimmed) {
+            options.push_back({cut->parts.part_a});
+          }
+          break;
+        case CutKeep::kPartB:
+          if (!surfaces[j].trimmed) {
+            options.push_back({cut->parts.part_b});
+          }
+          break;
+      }
+    }
+    const auto old_near = pointsNear(grid_, points_, rect, cutoff_);
+    const double old_empty = emptyCost(members[j], rect);
+    double best_gain = options_.min_gain;
+    std::vector<Rectangle> best;
+    for (const auto& parts : options) {
+      std::vector<Rectangle> fitted;
+      std::vector<std::vector<std::int32_t>> near = {old_near};
+      for (const auto& part : parts) {
+        Rectangle r = rect;
+        if (!acceptablePart(part, r)) {
+          break;
+        }
+        near.push_back(pointsNear(grid_, points_, r, cutoff_));
+        fitted.push_back(r);
+      }
+      if (fitted.size() != parts.size()) {
+        continue;
+      }
+      // Score the state the next M-step would reach: boundary points the
+      // parts would win back regrow them (a trim that would be undone gains
+      // nothing).
+      const std::vector<std::int32_t> affected = unionOf(near);
+      std::vector<std::vector<std::int32_t>> settled_members;
+      const std::vector<Rectangle> settled =
+          settleParts(j, fitted, affected, resp, settled_members);
+      double empty = 0.0;
+      for (std::size_t k = 0; k < settled.size(); ++k) {
+        empty += emptyCost(settled_members[k], settled[k]);
+      }
+      const double gain =
+          logLikelihoodChange(points_, resp, model_, affected, {static_cast<std::int32_t>(j)},
+                              settled, options_.responsibility_tolerance,
+                              options_.selection_scoring) -
+          options_.kappa * static_cast<double>(settled.size() - 1) + old_empty - empty;
+      if (gain > best_gain) {
+        best_gain = gain;
+        best = settled;
+      }
+    }
+    if (!best.empty()) {
+      surfaces[j].rect = best[0];
+      surfaces[j].id = next_id++;
+      surfaces[j].trimmed = surfaces[j].trimmed || best.size() == 1;
+      for (std::size_t k = 1; k < best.size(); ++k) {
+        added.push_back({best[k], next_id++, 0});
+      }
+      ++split;
+    }
+  }
+  if (split > 0) {
+    surfaces.insert(surfaces.end(), added.begin(), added.end());
+    expect(surfaces, resp);
+  }
+  return split;
+}
+
+int ModelSelector::seed(std::vector<Surface>& surfaces, const Responsibilities& resp,
+                        std::int32_t& next_id) {
+  std::vector<double> seedable = resp.outlier;
+  for (std::size_t i = 0; i < seedable.size(); ++i) {
+    if (not_planar_[i]) {
+      seedable[i] = 0.0;
+    }
+  }
+  const SeedResult s = seedSurfaces(
+      points_, neighbours_, seedable, model_, options_,
+      [this](const std::vector<std::int32_t>& m, Rectangle& r) { return acceptablePart(m, r); },
+      rng_);
+  // Eq. (30): a new surface must raise the log posterior by more than its
+  // penalty, by the same score removal uses (else it would be removed again).
+  int added = 0;
+  for (std::size_t k = 0; k < s.surfaces.size(); ++k) {
+    const Rectangle& r = s.surfaces[k];
+    const double gain =
+        logLikelihoodChange(points_, resp, model_, pointsNear(grid_, points_, r, cutoff_), {}, {r},
+                            options_.responsibility_tolerance, options_.selection_scoring) -
+        options_.kappa - emptyCost(s.members[k], r);
+    if (gain > options_.min_gain) {
+      surfaces.push_back({r, next_id++, static_cast<std::int32_t>(s.members[k].size())});
+      ++added;
+    }
+  }
+  return added;
+}
+
+int ModelSelector::prune(std::vector<Surface>& surfaces) {
+  Responsibilities resp;
+  expect(surfaces, resp);
+  return removeSurfaces(surfaces, resp);
+}
+
+SelectionChanges ModelSelector::round(std::vector<Surface>& surfaces, std::int32_t& next_id) {
+  SelectionChanges c;
+  Responsibilities resp;
+  expect(surfaces, resp);
+  c.removed = removeSurfaces(surfaces, resp);
+  c.fused = fuseSurfaces(surfaces, resp, next_id);
+  c.split = splitSurfaces(surfaces, resp, next_id);
+  c.added = seed(surfaces, resp, next_id);
+  return c;
+}
+
+}  // namespace pmap::em

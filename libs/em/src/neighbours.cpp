@@ -1,0 +1,62 @@
+#include "pmap/em/neighbours.h"
+
+#include <algorithm>
+#include <unordered_map>
+
+#include "pmap/em/point_grid.h"
+
+namespace pmap::em {
+namespace {
+
+std::uint64_t packKey(std::int64_t group, std::int64_t row, std::int64_t col) {
+  constexpr std::uint64_t kMask24 = (1u << 24) - 1;
+  return (static_cast<std::uint64_t>(group & 0xFFFF) << 48) |
+         ((static_cast<std::uint64_t>(row) & kMask24) << 24) |
+         (static_cast<std::uint64_t>(col) & kMask24);
+}
+
+}  // namespace
+
+Neighbours gridNeighbours(const std::vector<GridKey>& keys) {
+  std::unordered_map<std::uint64_t, std::int32_t> index;
+  index.reserve(keys.size());
+  for (size_t i = 0; i < keys.size(); ++i) {
+    index.emplace(packKey(keys[i].group, keys[i].row, keys[i].col), static_cast<std::int32_t>(i));
+  }
+  auto find = [&](std::int64_t g, std::int64_t r, std::int64_t c) -> std::int32_t {
+    if (r < 0 || c < 0) {
+      return -1;
+    }
+    const auto it = index.find(packKey(g, r, c));
+    return it == index.end() ? -1 : it->second;
+  };
+  Neighbours out(keys.size());
+  for (size_t i = 0; i < keys.size(); ++i) {
+    const GridKey& k = keys[i];
+    out[i] = {find(k.group, k.row, k.col - 1), find(k.group, k.row, k.col + 1),
+              find(k.group, k.row - 1, k.col), find(k.group, k.row + 1, k.col)};
+  }
+  return out;
+}
+
+Neighbours nearestNeighbours(const std::vector<Eigen::Vector3d>& points, double radius_m) {
+  const PointGrid grid(points, radius_m);
+  Neighbours out(points.size(), {-1, -1, -1, -1});
+  std::vector<std::pair<double, std::int32_t>> cand;
+  for (size_t i = 0; i < points.size(); ++i) {
+    cand.clear();
+    for (const std::int32_t j : grid.within(points[i], radius_m)) {
+      if (j != static_cast<std::int32_t>(i)) {
+        cand.emplace_back((points[j] - points[i]).squaredNorm(), j);
+      }
+    }
+    const size_t k = std::min<size_t>(4, cand.size());
+    std::partial_sort(cand.begin(), cand.begin() + static_cast<std::ptrdiff_t>(k), cand.end());
+    for (size_t m = 0; m < k; ++m) {
+      out[i][m] = cand[m].second;
+    }
+  }
+  return out;
+}
+
+}  // namespace pmap::em

@@ -1,0 +1,130 @@
+#include "pmap/em/offline_em.h"
+
+#include <cassert>
+#include <cmath>
+
+#include "pmap/em/model_selection.h"
+#include "pmap/em/surface_fit.h"
+
+namespace pmap::em {
+namespace {
+
+double explainedFraction(const Responsibilities& resp) {
+  if (resp.points() == 0) {
+    return 0.0;
+  }
+  std::size_t explained = 0;
+  for (const std::int32_t b : resp.best) {
+    explained += b >= 0 ? 1 : 0;
+  }
+  return static_cast<double>(explained) / static_cast<double>(resp.points());
+}
+
+std::vector<double> emptyAreas(const std::vector<Eigen::Vector3d>& points,
+                               const Responsibilities& resp, const std::vector<Surface>& surfaces,
+                               double cell_m) {
+  const auto members = hardMembers(resp, surfaces.size());
+  std::vector<double> out(surfaces.size());
+  for (std::size_t j = 0; j < surfaces.size(); ++j) {
+    out[j] = emptyArea(points, members[j], surfaces[j].rect, cell_m);
+  }
+  return out;
+}
+
+}  // namespace
+
+const char* toString(Termination t) {
+  switch (t) {
+    case Termination::kConverged:
+      return "converged";
+    case Termination::kMaxIterations:
+      return "max_iterations";
+    default:
+      return "no_points";
+  }
+}
+
+OfflineEm::OfflineEm(const PlanarEmOptions& options) : options_(options) {
+  assert(options.validate(nullptr));
+}
+
+PlanarMap finalizeMap(const std::vector<Eigen::Vector3d>& points, const Neighbours& neighbours,
+                      std::vector<Surface> surfaces, const ModelSelector& selector,
+                      const PlanarEmOptions& options) {
+  Responsibilities resp;
+  selector.expect(surfaces, resp);
+  const auto members = hardMembers(resp, surfaces.size());
+  PlanarMap map;
+  map.assignment = resp.best;
+  map.explained_fraction = explainedFraction(resp);
+  std::vector<char> outlier(points.size(), 0);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    outlier[i] = resp.best[i] < 0 ? 1 : 0;
+  }
+  map.fine_triangles = fineTriangles(points, neighbours, outlier, options.fine_max_edge_m);
+  for (std::size_t j = 0; j < surfaces.size(); ++j) {
+    surfaces[j].support = static_cast<std::int32_t>(members[j].size());
+  }
+  map.surfaces = std::move(surfaces);
+  return map;
+}
+
+EmResult OfflineEm::run(const std::vector<Eigen::Vector3d>& points, const Neighbours& neighbours,
+                        const std::vector<std::int32_t>& rows,
+                        std::vector<Surface> surfaces) const {
+  EmResult result;
+  if (points.empty()) {
+    result.message = "no points";
+    return result;
+  }
+  ModelSelector selector(points, neighbours, rows, options_);
+  std::int32_t next_id = 0;
+  for (const Surface& s : surfaces) {
+    next_id = std::max(next_id, s.id + 1);
+  }
+  Responsibilities resp;
+  int patience = 0;
+  bool last_round_quiet = false;
+  double previous = std::nan("");
+  result.termination = Termination::kMaxIterations;
+  for (int it = 0; it < options_.max_iterations; ++it) {
+    IterationRecord rec;
+    rec.iteration = it;
+    if (options_.model_selection && it % options_.selection_interval == 0) {
+      rec.changes = selector.round(surfaces, next_id);
+      last_round_quiet = !rec.changes.any() && it > 0;
+      if (rec.changes.any()) {
+        patience = 0;
+      }
+    }
+    selector.expect(surfaces, resp);  // E-step, eqs. (17)-(18)
+    rec.surfaces = static_cast<int>(surfaces.size());
+    rec.explained_fraction = explainedFraction(resp);
+    rec.log_likelihood = resp.total_loglik;
+    rec.log_posterior = logPosterior(
+        resp, surfaces, emptyAreas(points, resp, surfaces, options_.split_cell_m), options_);
+    result.history.push_back(rec);
+    result.iterations = it + 1;
+    const double change = std::abs(rec.log_posterior - previous);
+    const bool small = change < options_.convergence_tolerance * std::abs(previous) ||
+                       change < options_.convergence_absolute_nats;
+    patience = small ? patience + 1 : 0;
+    previous = rec.log_posterior;
+    const bool selection_settled = !options_.model_selection || last_round_quiet;
+    if (selection_settled && patience >= options_.convergence_patience) {
+      result.termination = Termination::kConverged;
+      break;
+    }
+    maximizeSurfaces(points, neighbours, resp, options_.threads, surfaces);  // eqs. (19)-(29)
+  }
+  if (options_.model_selection && result.termination != Termination::kConverged) {
+    selector.prune(surfaces);  // surfaces seeded in the last round were never re-checked
+  }
+  result.map = finalizeMap(points, neighbours, std::move(surfaces), selector, options_);
+  result.message = std::string(toString(result.termination)) + " after " +
+                   std::to_string(result.iterations) + " iterations, " +
+                   std::to_string(result.map.surfaces.size()) + " surfaces";
+  return result;
+}
+
+}  // namespace pmap::em

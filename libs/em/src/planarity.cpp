@@ -1,0 +1,58 @@
+#include "pmap/em/planarity.h"
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <limits>
+
+namespace pmap::em {
+
+Planarity measurePlanarity(const std::vector<Eigen::Vector3d>& points,
+                           const std::vector<std::int32_t>& members, const Rectangle& rect) {
+  Planarity out;
+  out.curvature_radius_m = std::numeric_limits<double>::infinity();
+  if (members.size() < 12) {
+    return out;
+  }
+  const Eigen::Vector3d u = rect.axis_u;
+  const Eigen::Vector3d v = rect.axisV();
+  // Scale the in-plane coordinates to ~1 for a well-conditioned system.
+  const double scale = std::max({rect.half_u, rect.half_v, 1e-3});
+  Eigen::Matrix<double, 6, 6> ata = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 1> atb = Eigen::Matrix<double, 6, 1>::Zero();
+  double sum_h = 0.0;
+  double sum_h2 = 0.0;
+  for (const std::int32_t i : members) {
+    const Eigen::Vector3d d = points[static_cast<std::size_t>(i)] - rect.centre;
+    const double a = u.dot(d) / scale;
+    const double b = v.dot(d) / scale;
+    const double h = rect.normal.dot(d);
+    Eigen::Matrix<double, 6, 1> row;
+    row << a * a, a * b, b * b, a, b, 1.0;
+    ata.noalias() += row * row.transpose();
+    atb += row * h;
+    sum_h += h;
+    sum_h2 += h * h;
+  }
+  const double n = static_cast<double>(members.size());
+  const double variance =
+      sum_h2 - sum_h * sum_h / n;  // about the mean (linear part ~0 after the fit)
+  const Eigen::Matrix<double, 6, 1> coef = ata.ldlt().solve(atb);
+  const double rss = sum_h2 - 2.0 * coef.dot(atb) + coef.dot(ata * coef);
+  if (!(variance > 0.0) || !coef.allFinite()) {
+    return out;
+  }
+  out.variance_explained = std::clamp(1.0 - rss / variance, 0.0, 1.0);
+  Eigen::Matrix2d hessian;
+  hessian << 2.0 * coef(0), coef(1), coef(1), 2.0 * coef(2);
+  hessian /= scale * scale;
+  const double k =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(hessian).eigenvalues().cwiseAbs().maxCoeff();
+  out.curvature_radius_m = k > 0.0 ? 1.0 / k : std::numeric_limits<double>::infinity();
+  return out;
+}
+
+bool isCurved(const Planarity& p, double min_radius_m) {
+  return p.curvature_radius_m < min_radius_m && p.variance_explained >= 0.25;
+}
+
+}  // namespace pmap::em

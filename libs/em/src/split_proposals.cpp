@@ -1,0 +1,264 @@
+#include "pmap/em/split_proposals.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace pmap::em {
+namespace {
+
+struct CellGrid {
+  int cols = 0;
+  int rows = 0;
+  std::vector<int> cell_of;  // per member
+};
+
+CellGrid gridOf(const std::vector<Eigen::Vector3d>& points,
+                const std::vector<std::int32_t>& members, const Rectangle& rect, double cell_m) {
+  CellGrid g;
+  g.cols = std::max(1, static_cast<int>(std::ceil(2.0 * rect.half_u / cell_m)));
+  g.rows = std::max(1, static_cast<int>(std::ceil(2.0 * rect.half_v / cell_m)));
+  const Eigen::Vector3d v = rect.axisV();
+  for (const std::int32_t i : members) {
+    const Eigen::Vector3d d = points[static_cast<std::size_t>(i)] - rect.centre;
+    const int c =
+        std::clamp(static_cast<int>((rect.axis_u.dot(d) + rect.half_u) / cell_m), 0, g.cols - 1);
+    const int r = std::clamp(static_cast<int>((v.dot(d) + rect.half_v) / cell_m), 0, g.rows - 1);
+    g.cell_of.push_back(r * g.cols + c);
+  }
+  return g;
+}
+
+// 4-connected components of flagged cells with the same sign; returns the
+// component id per cell (-1 unflagged) and the number of components.
+int components(const CellGrid& g, const std::vector<int>& sign, std::vector<int>& comp) {
+  comp.assign(sign.size(), -1);
+  int count = 0;
+  std::vector<int> stack;
+  for (int start = 0; start < static_cast<int>(sign.size()); ++start) {
+    if (sign[start] == 0 || comp[start] >= 0) {
+      continue;
+    }
+    comp[start] = count;
+    stack = {start};
+    while (!stack.empty()) {
+      const int c = stack.back();
+      stack.pop_back();
+      const int r = c / g.cols;
+      const int k = c % g.cols;
+      const int nbr[4][2] = {{r - 1, k}, {r + 1, k}, {r, k - 1}, {r, k + 1}};
+      for (const auto& n : nbr) {
+        if (n[0] < 0 || n[0] >= g.rows || n[1] < 0 || n[1] >= g.cols) {
+          continue;
+        }
+        const int m = n[0] * g.cols + n[1];
+        if (sign[m] == sign[c] && comp[m] < 0) {
+          comp[m] = count;
+          stack.push_back(m);
+        }
+      }
+    }
+    ++count;
+  }
+  return count;
+}
+
+SplitProposal partition(const std::vector<std::int32_t>& members, const std::vector<int>& cell_of,
+                        const std::vector<char>& in_a) {
+  SplitProposal p;
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    (in_a[static_cast<std::size_t>(cell_of[k])] ? p.part_a : p.part_b).push_back(members[k]);
+  }
+  return p;
+}
+
+}  // namespace
+
+std::optional<SplitProposal> residualSplit(const std::vector<Eigen::Vector3d>& points,
+                                           const std::vector<std::int32_t>& members,
+                                           const Rectangle& rect, double cell_m,
+                                           double min_offset_m, double sigma,
+                                           std::size_t min_part) {
+  if (members.size() < 2 * min_part) {
+    return std::nullopt;
+  }
+  const CellGrid g = gridOf(points, members, rect, cell_m);
+  const std::size_t cells = static_cast<std::size_t>(g.rows) * static_cast<std::size_t>(g.cols);
+  std::vector<double> sum(cells, 0.0);
+  std::vector<int> count(cells, 0);
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    sum[g.cell_of[k]] += rect.planeDistance(points[static_cast<std::size_t>(members[k])]);
+    ++count[g.cell_of[k]];
+  }
+  std::vector<int> sign(cells, 0);
+  for (std::size_t c = 0; c < cells; ++c) {
+    if (count[c] < 8) {
+      continue;
+    }
+    const double mean = sum[c] / count[c];
+    if (std::abs(mean) > min_offset_m && std::abs(mean) > 4.0 * sigma / std::sqrt(count[c])) {
+      sign[c] = mean > 0 ? 1 : -1;
+    }
+  }
+  std::vector<int> comp;
+  const int n = components(g, sign, comp);
+  if (n == 0) {
+    return std::nullopt;
+  }
+  std::vector<std::size_t> pts(static_cast<std::size_t>(n), 0);
+  for (std::size_t c = 0; c < cells; ++c) {
+    if (comp[c] >= 0) {
+      pts[static_cast<std::size_t>(comp[c])] += static_cast<std::size_t>(count[c]);
+    }
+  }
+  const auto best = static_cast<int>(std::max_element(pts.begin(), pts.end()) - pts.begin());
+  std::vector<char> in_a(cells, 0);
+  for (std::size_t c = 0; c < cells; ++c) {
+    in_a[c] = comp[c] == best ? 1 : 0;
+  }
+  SplitProposal p = partition(members, g.cell_of, in_a);
+  if (p.part_a.size() < min_part || p.part_b.size() < min_part) {
+    return std::nullopt;
+  }
+  return p;
+}
+
+namespace {
+
+// Occupied-cell bounding boxes of the cells before / after each cut along one
+// axis of the grid ("lines" are columns for cuts along u, rows for cuts along
+// v). Returns for every cut position k (1..lines-1) the empty area in cells of
+// the part below and above k, and the total empty area of the whole.
+struct CutAreas {
+  std::vector<double> empty_low, empty_high;
+  double empty_whole = 0;
+};
+
+CutAreas cutAreas(const std::vector<int>& line_of_cell, const std::vector<int>& across_of_cell,
+                  const std::vector<char>& occupied, int lines) {
+  // Per line: occupied count and the occupied extent across.
+  std::vector<int> count(static_cast<std::size_t>(lines), 0);
+  std::vector<int> lo(static_cast<std::size_t>(lines), INT32_MAX);
+  std::vector<int> hi(static_cast<std::size_t>(lines), INT32_MIN);
+  for (std::size_t c = 0; c < occupied.size(); ++c) {
+    if (occupied[c]) {
+      const auto l = static_cast<std::size_t>(line_of_cell[c]);
+      ++count[l];
+      lo[l] = std::min(lo[l], across_of_cell[c]);
+      hi[l] = std::max(hi[l], across_of_cell[c]);
+    }
+  }
+  // Empty area of lines [a, b): bbox of occupied cells minus occupied cells.
+  auto empty = [&](int a, int b) {
+    int first = -1, last = -1, amin = INT32_MAX, amax = INT32_MIN, n = 0;
+    for (int l = a; l < b; ++l) {
+      if (count[static_cast<std::size_t>(l)] == 0)
+        continue;
+      if (first < 0)
+        first = l;
+      last = l;
+      amin = std::min(amin, lo[static_cast<std::size_t>(l)]);
+      amax = std::max(amax, hi[static_cast<std::size_t>(l)]);
+      n += count[static_cast<std::size_t>(l)];
+    }
+    return first < 0 ? 0.0 : static_cast<double>((last - first + 1) * (amax - amin + 1) - n);
+  };
+  CutAreas out;
+  out.empty_whole = empty(0, lines);
+  out.empty_low.assign(static_cast<std::size_t>(lines), 0.0);
+  out.empty_high.assign(static_cast<std::size_t>(lines), 0.0);
+  for (int k = 1; k < lines; ++k) {
+    out.empty_low[static_cast<std::size_t>(k)] = empty(0, k);
+    out.empty_high[static_cast<std::size_t>(k)] = empty(k, lines);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::optional<CoverageCut> coverageCut(const std::vector<Eigen::Vector3d>& points,
+                                       const std::vector<std::int32_t>& members,
+                                       const std::vector<double>& member_loss,
+                                       const Rectangle& rect, double cell_m, double empty_area_cost,
+                                       double kappa, std::size_t min_part, bool allow_trims) {
+  if (members.size() < min_part) {
+    return std::nullopt;
+  }
+  const CellGrid g = gridOf(points, members, rect, cell_m);
+  const std::size_t cells = static_cast<std::size_t>(g.rows) * static_cast<std::size_t>(g.cols);
+  std::vector<char> occupied(cells, 0);
+  for (const int c : g.cell_of) {
+    occupied[static_cast<std::size_t>(c)] = 1;
+  }
+  const double cell_area = cell_m * cell_m;
+  std::optional<CoverageCut> best;
+  for (const bool along_u : {true, false}) {
+    const int lines = along_u ? g.cols : g.rows;
+    std::vector<int> line_of(cells), across_of(cells);
+    for (std::size_t c = 0; c < cells; ++c) {
+      const int r = static_cast<int>(c) / g.cols;
+      const int k = static_cast<int>(c) % g.cols;
+      line_of[c] = along_u ? k : r;
+      across_of[c] = along_u ? r : k;
+    }
+    const CutAreas areas = cutAreas(line_of, across_of, occupied, lines);
+    // Members and loss per line, then prefix sums.
+    std::vector<double> loss_prefix(static_cast<std::size_t>(lines) + 1, 0.0);
+    std::vector<std::size_t> count_prefix(static_cast<std::size_t>(lines) + 1, 0);
+    for (std::size_t m = 0; m < members.size(); ++m) {
+      const auto l = static_cast<std::size_t>(line_of[static_cast<std::size_t>(g.cell_of[m])]);
+      loss_prefix[l + 1] += member_loss[m];
+      ++count_prefix[l + 1];
+    }
+    for (int l = 0; l < lines; ++l) {
+      loss_prefix[static_cast<std::size_t>(l) + 1] += loss_prefix[static_cast<std::size_t>(l)];
+      count_prefix[static_cast<std::size_t>(l) + 1] += count_prefix[static_cast<std::size_t>(l)];
+    }
+    const double loss_all = loss_prefix.back();
+    for (int k = 1; k < lines; ++k) {
+      const auto ku = static_cast<std::size_t>(k);
+      const std::size_t n_low = count_prefix[ku];
+      const std::size_t n_high = members.size() - n_low;
+      const double lo = areas.empty_low[ku];
+      const double hi = areas.empty_high[ku];
+      const double whole = areas.empty_whole;
+      struct Option {
+        CutKeep keep;
+        double gain;
+        bool ok;
+      };
+      const Option options[3] = {
+          {CutKeep::kBoth, empty_area_cost * (whole - lo - hi) * cell_area - kappa,
+           n_low >= min_part && n_high >= min_part},
+          {CutKeep::kPartA,
+           empty_area_cost * (whole - lo) * cell_area - (loss_all - loss_prefix[ku]),
+           allow_trims && n_low >= min_part},
+          {CutKeep::kPartB, empty_area_cost * (whole - hi) * cell_area - loss_prefix[ku],
+           allow_trims && n_high >= min_part}};
+      for (const Option& o : options) {
+        // Ties (an L cut either way) go to the cut leaving the larger part.
+        const std::size_t larger = std::max(n_low, n_high);
+        if (!o.ok || o.gain <= 0.0 ||
+            (best &&
+             (o.gain < best->estimated_gain - 1e-9 ||
+              (o.gain <= best->estimated_gain + 1e-9 &&
+               larger <= std::max(best->parts.part_a.size(), best->parts.part_b.size()))))) {
+          continue;
+        }
+        CoverageCut cut;
+        cut.keep = o.keep;
+        cut.estimated_gain = o.gain;
+        std::vector<char> in_a(cells, 0);
+        for (std::size_t c = 0; c < cells; ++c) {
+          in_a[c] = line_of[c] < k ? 1 : 0;
+        }
+        cut.parts = partition(members, g.cell_of, in_a);
+        best = std::move(cut);
+      }
+    }
+  }
+  return best;
+}
+
+}  // namespace pmap::em

@@ -1,0 +1,63 @@
+#include "pmap/eval/label_metrics.h"
+
+#include "pmap/eval/point_labels.h"
+
+namespace pmap::eval {
+namespace {
+
+std::optional<double> ratio(std::size_t num, std::size_t den) {
+  if (den == 0) {
+    return std::nullopt;
+  }
+  return static_cast<double>(num) / static_cast<double>(den);
+}
+
+std::unordered_set<int> clutterIds(const GroundTruth& gt) {
+  std::unordered_set<int> ids;
+  for (const auto& c : gt.cylinders) {
+    ids.insert(c.id);
+  }
+  for (const auto& b : gt.boxes) {
+    ids.insert(b.id);
+  }
+  return ids;
+}
+
+}  // namespace
+
+LabelMetrics labelMetrics(const GroundTruth& gt, const std::vector<int>& point_surfaces,
+                          const std::vector<int>& labels, const SurfaceMatches& matches,
+                          const std::unordered_set<int>& eligible) {
+  const std::unordered_set<int> clutter = clutterIds(gt);
+  LabelMetrics m;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    const int label = labels[i];
+    const int surface = point_surfaces[i];
+    if (label == kNoLabelEntry) {
+      continue;
+    }
+    const bool correct = surface >= 0 && label >= 0 && matches.matchedGt(surface) == label;
+    if (eligible.count(label) != 0) {
+      ++m.on_surface_points;
+      m.recalled_points += correct ? 1 : 0;
+    }
+    if (surface >= 0) {
+      ++m.assigned_points;
+      m.correct_points += correct ? 1 : 0;
+    }
+    if (clutter.count(label) != 0) {
+      ++m.clutter_points;
+      m.clutter_rejected += surface == -1 ? 1 : 0;
+    }
+  }
+  m.recall = ratio(m.recalled_points, m.on_surface_points);
+  m.precision = ratio(m.correct_points, m.assigned_points);
+  if (m.recall && m.precision) {
+    const double sum = *m.recall + *m.precision;
+    m.f1 = sum > 0 ? 2.0 * *m.recall * *m.precision / sum : 0.0;
+  }
+  m.clutter_rejected_fraction = ratio(m.clutter_rejected, m.clutter_points);
+  return m;
+}
+
+}  // namespace pmap::eval
