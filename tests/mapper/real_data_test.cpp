@@ -1,8 +1,11 @@
 // planar-mapper on MRPT's real datasets (Debian package mrpt-common).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "app_runner.h"
 #include "pmap/mapper/planar_mapper_app.h"
@@ -75,7 +78,8 @@ TEST(SenaLog, WithoutAStructureSensorMappingIsAnInputError) {
 TEST(RgbdFrame, MapsAsStructurePointsWithTheIdentityPose) {
   const fs::path out = testing::freshTestDir("rgbd");
   ASSERT_EQ(run({"--config", (kConfigDir / "mrpt-rgbd.ini").string(), "--rawlog",
-                 (kDatasets / "tests_rgbd.rawlog").string(), "--quiet", "--out", out.string()}),
+                 (kDatasets / "tests_rgbd.rawlog").string(), "--mode", "raw", "--quiet", "--out",
+                 out.string()}),
             0);
   const auto s = summary(out);
   EXPECT_EQ(s["poses"]["source"], "identity");
@@ -85,6 +89,41 @@ TEST(RgbdFrame, MapsAsStructurePointsWithTheIdentityPose) {
   EXPECT_EQ(s["points"], 273225);
   EXPECT_EQ(s["points_dropped_by_reason"]["invalid"], 640 * 480 - 273225);
   EXPECT_GT(s["raw_triangles"].get<int>(), 400000);
+}
+
+// The Kinect frame shows a wall behind a bookshelf: the offline EM must give
+// the wall and the bookshelf's front faces as different surfaces (both face
+// the camera, +x, about 35 cm apart in depth).
+TEST(RgbdFrame, WallAndBookshelfFacesAreSeparateSurfaces) {
+  const fs::path out = testing::freshTestDir("rgbd_em");
+  ASSERT_EQ(run({"--config", (kConfigDir / "mrpt-rgbd.ini").string(), "--rawlog",
+                 (kDatasets / "tests_rgbd.rawlog").string(), "--mode", "offline", "--quiet",
+                 "--out", out.string()}),
+            0);
+  std::ifstream in(out / "surfaces.csv");
+  std::string line;
+  std::getline(in, line);
+  double wall_offset = 0;
+  double shelf_offset = 1e9;
+  int surfaces = 0;
+  while (std::getline(in, line)) {
+    double v[18];
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream row(line);
+    for (double& x : v) {
+      row >> x;
+    }
+    ++surfaces;
+    const bool facing_camera = std::abs(v[1]) > std::cos(20 * M_PI / 180);  // |n . x|
+    if (facing_camera && v[17] > 1000) {
+      const double depth = std::abs(v[4]);
+      wall_offset = std::max(wall_offset, depth);
+      shelf_offset = std::min(shelf_offset, depth);
+    }
+  }
+  EXPECT_GE(surfaces, 3);
+  EXPECT_GT(wall_offset, 2.05);  // the wall, ~2.15 m away
+  EXPECT_LT(shelf_offset, 1.9);  // the bookshelf's front, ~1.8 m away
 }
 
 TEST(VelodyneSweep, MapsAsAnUnorganisedCloud) {

@@ -47,7 +47,7 @@ std::vector<Triangle> fineTriangles(const std::vector<Eigen::Vector3d>& points,
         }
         const double longest =
             std::max({(q - p).squaredNorm(), (r - p).squaredNorm(), (r - q).squaredNorm()});
-        if ((q - p).cross(r - p).norm() < 0.1 * longest) {
+        if (longest <= 0.0 || (q - p).cross(r - p).norm() < 0.1 * longest) {
           continue;
         }
         out.push_back({static_cast<std::int32_t>(i), cand[a].second, cand[b].second});

@@ -339,9 +339,10 @@ int ModelSelector::splitSurfaces(std::vector<Surface>& surfaces, Responsibilitie
     // Candidate replacements of surface j: two parts, or one part (a trim:
     // the other part's points are left to whatever else explains them).
     std::vector<std::vector<std::vector<std::int32_t>>> options;
-    if (auto p = residualSplit(points_, members[j], rect, options_.split_cell_m,
-                               options_.split_min_offset_m, model_.sigma(), min_part)) {
-      options.push_back({p->part_a, p->part_b});
+    for (const SplitProposal& p :
+         residualSplits(points_, members[j], rect, options_.split_cell_m,
+                        options_.split_min_offset_m, model_.sigma(), min_part)) {
+      options.push_back({p.part_a, p.part_b});
     }
     if (auto cut = coverageCut(points_, members[j], memberLoss(resp, j, members[j]), rect,
                                options_.split_cell_m, options_.empty_area_cost, options_.kappa,

@@ -6,28 +6,14 @@
 #include "pmap/em/point_grid.h"
 
 namespace pmap::em {
-namespace {
-
-std::uint64_t packKey(std::int64_t group, std::int64_t row, std::int64_t col) {
-  constexpr std::uint64_t kMask24 = (1u << 24) - 1;
-  return (static_cast<std::uint64_t>(group & 0xFFFF) << 48) |
-         ((static_cast<std::uint64_t>(row) & kMask24) << 24) |
-         (static_cast<std::uint64_t>(col) & kMask24);
-}
-
-}  // namespace
-
 Neighbours gridNeighbours(const std::vector<GridKey>& keys) {
-  std::unordered_map<std::uint64_t, std::int32_t> index;
+  std::unordered_map<GridKey, std::int32_t, GridKeyHash> index;
   index.reserve(keys.size());
   for (size_t i = 0; i < keys.size(); ++i) {
-    index.emplace(packKey(keys[i].group, keys[i].row, keys[i].col), static_cast<std::int32_t>(i));
+    index.emplace(keys[i], static_cast<std::int32_t>(i));
   }
-  auto find = [&](std::int64_t g, std::int64_t r, std::int64_t c) -> std::int32_t {
-    if (r < 0 || c < 0) {
-      return -1;
-    }
-    const auto it = index.find(packKey(g, r, c));
+  auto find = [&](std::int32_t g, std::int32_t r, std::int32_t c) -> std::int32_t {
+    const auto it = index.find(GridKey{g, r, c});
     return it == index.end() ? -1 : it->second;
   };
   Neighbours out(keys.size());

@@ -39,6 +39,8 @@ const char* toString(Termination t) {
       return "converged";
     case Termination::kMaxIterations:
       return "max_iterations";
+    case Termination::kOnline:
+      return "online";
     default:
       return "no_points";
   }

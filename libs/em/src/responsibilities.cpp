@@ -1,6 +1,7 @@
 #include "pmap/em/responsibilities.h"
 
 #include <cmath>
+#include <limits>
 
 #include "pmap/em/parallel.h"
 
@@ -18,6 +19,9 @@ struct ChunkOut {
 
 double logAddExp(double a, double b) {
   const double m = std::max(a, b);
+  if (m == -std::numeric_limits<double>::infinity()) {
+    return m;  // both terms are zero
+  }
   return m + std::log(std::exp(a - m) + std::exp(b - m));
 }
 

@@ -111,9 +111,9 @@ SeedResult seedSurfaces(const std::vector<Eigen::Vector3d>& points, const Neighb
     // Check again on what the surface will explain once EM takes over: every
     // connected free point within the outlier distance. A bin passes the
     // first test on a thin strip, then bends visibly on the wider band.
+    Rectangle wide = rect;  // growRegion refits its plane: keep `rect` the seed's fit
     std::vector<std::int32_t> band =
-        growRegion(points, neighbours, free, t, model.outlierDistance(), rect);
-    Rectangle wide = rect;
+        growRegion(points, neighbours, free, t, model.outlierDistance(), wide);
     if (!accept(band, wide)) {
       continue;
     }

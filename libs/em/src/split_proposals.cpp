@@ -75,14 +75,18 @@ SplitProposal partition(const std::vector<std::int32_t>& members, const std::vec
 
 }  // namespace
 
-std::optional<SplitProposal> residualSplit(const std::vector<Eigen::Vector3d>& points,
-                                           const std::vector<std::int32_t>& members,
-                                           const Rectangle& rect, double cell_m,
-                                           double min_offset_m, double sigma,
-                                           std::size_t min_part) {
+std::vector<SplitProposal> residualSplits(const std::vector<Eigen::Vector3d>& points,
+                                          const std::vector<std::int32_t>& members,
+                                          const Rectangle& rect, double cell_m, double min_offset_m,
+                                          double sigma, std::size_t min_part) {
+  std::vector<SplitProposal> out;
   if (members.size() < 2 * min_part) {
-    return std::nullopt;
+    return out;
   }
+  // Cells large enough to hold ~24 points on average: a patch's mean residual
+  // is then known to ~sigma/5, and noise-thinned patches still count.
+  const double density = static_cast<double>(members.size()) / std::max(rect.area(), 1e-9);
+  cell_m = std::max(cell_m, std::sqrt(24.0 / density));
   const CellGrid g = gridOf(points, members, rect, cell_m);
   const std::size_t cells = static_cast<std::size_t>(g.rows) * static_cast<std::size_t>(g.cols);
   std::vector<double> sum(cells, 0.0);
@@ -103,25 +107,42 @@ std::optional<SplitProposal> residualSplit(const std::vector<Eigen::Vector3d>& p
   }
   std::vector<int> comp;
   const int n = components(g, sign, comp);
-  if (n == 0) {
-    return std::nullopt;
+  std::vector<std::pair<std::size_t, int>> by_size;  // points, component
+  for (int k = 0; k < n; ++k) {
+    by_size.emplace_back(0, k);
   }
-  std::vector<std::size_t> pts(static_cast<std::size_t>(n), 0);
   for (std::size_t c = 0; c < cells; ++c) {
     if (comp[c] >= 0) {
-      pts[static_cast<std::size_t>(comp[c])] += static_cast<std::size_t>(count[c]);
+      by_size[static_cast<std::size_t>(comp[c])].first += static_cast<std::size_t>(count[c]);
     }
   }
-  const auto best = static_cast<int>(std::max_element(pts.begin(), pts.end()) - pts.begin());
-  std::vector<char> in_a(cells, 0);
-  for (std::size_t c = 0; c < cells; ++c) {
-    in_a[c] = comp[c] == best ? 1 : 0;
+  std::sort(by_size.begin(), by_size.end(), [](const auto& a, const auto& b) {
+    return a.first > b.first || (a.first == b.first && a.second < b.second);
+  });
+  for (const auto& [size, k] : by_size) {
+    std::vector<char> in_a(cells, 0);
+    for (std::size_t c = 0; c < cells; ++c) {
+      in_a[c] = comp[c] == k ? 1 : 0;
+    }
+    SplitProposal p = partition(members, g.cell_of, in_a);
+    if (p.part_a.size() >= min_part && p.part_b.size() >= min_part) {
+      out.push_back(std::move(p));
+    }
   }
-  SplitProposal p = partition(members, g.cell_of, in_a);
-  if (p.part_a.size() < min_part || p.part_b.size() < min_part) {
+  return out;
+}
+
+std::optional<SplitProposal> residualSplit(const std::vector<Eigen::Vector3d>& points,
+                                           const std::vector<std::int32_t>& members,
+                                           const Rectangle& rect, double cell_m,
+                                           double min_offset_m, double sigma,
+                                           std::size_t min_part) {
+  std::vector<SplitProposal> all =
+      residualSplits(points, members, rect, cell_m, min_offset_m, sigma, min_part);
+  if (all.empty()) {
     return std::nullopt;
   }
-  return p;
+  return std::move(all.front());
 }
 
 namespace {

@@ -1,5 +1,6 @@
 #include "pmap/mapper/mapper_args.h"
 
+#include <cmath>
 #include <sstream>
 
 #include "pmap/common/error.h"
@@ -53,12 +54,21 @@ std::optional<MapperArgs> parseMapperArgs(int argc, const char* const* argv) {
       "", "poses", "use these poses (poses.txt format) instead of ICP", false, "", "FILE", cmd);
   TCLAP::ValueArg<std::string> out("o", "out", "output directory", false, "planar-mapper-out",
                                    "DIR", cmd);
-  std::vector<std::string> modes = {"offline", "raw"};
+  std::vector<std::string> modes = {"online", "offline", "raw"};
   TCLAP::ValuesConstraint<std::string> mode_values(modes);
-  TCLAP::ValueArg<std::string> mode("", "mode",
-                                    "offline: EM planar map over all measurements (default); "
-                                    "raw: points and the raw polygon map only",
-                                    false, "offline", &mode_values, cmd);
+  TCLAP::ValueArg<std::string> mode(
+      "", "mode",
+      "online: the planar map is updated after every scan (default); offline: EM over all "
+      "measurements at the end; raw: points and the raw polygon map only",
+      false, "online", &mode_values, cmd);
+  TCLAP::ValueArg<long long> snapshot("", "snapshot-every",
+                                      "online: also write the map every N structure scans "
+                                      "(OUT/snapshots/map_NNNNNN.wrl)",
+                                      false, 0, "N", cmd);
+  TCLAP::ValueArg<double> playback("", "playback-rate",
+                                   "feed the log at R times its recorded pace (1 = real time; "
+                                   "default 0 = as fast as possible)",
+                                   false, 0.0, "R", cmd);
   TCLAP::SwitchArg poses_only("", "poses-only", "only run the pose stage and write poses.txt", cmd);
   TCLAP::ValueArg<long long> from("", "from-index", "first rawlog record to use (as rawlog-edit)",
                                   false, 0, "N", cmd);
@@ -96,6 +106,12 @@ std::optional<MapperArgs> parseMapperArgs(int argc, const char* const* argv) {
     throw ConfigError("usage: --cloud and --rawlog are exclusive");
   }
   a.mode = mode.getValue();
+  if (snapshot.getValue() < 0 || snapshot.getValue() > 1000000000 ||
+      !(playback.getValue() >= 0.0) || !std::isfinite(playback.getValue())) {
+    throw ConfigError("usage: --snapshot-every must be >= 0 and --playback-rate a number >= 0");
+  }
+  a.snapshot_every = static_cast<int>(snapshot.getValue());
+  a.playback_rate = playback.getValue();
   a.poses_only = poses_only.getValue();
   a.accept_truncated = accept_truncated.getValue();
   a.quiet = quiet.getValue();

@@ -10,7 +10,7 @@ namespace pmap::mapper {
 namespace {
 
 const std::vector<std::string>& projectSections() {
-  static const std::vector<std::string> s = {"Sensors", "Output", "PlanarEM"};
+  static const std::vector<std::string> s = {"Sensors", "Output", "PlanarEM", "OnlineEM"};
   return s;
 }
 
@@ -87,6 +87,17 @@ void PlanarEmSection::load(config::SectionReader& r) {
   r.read("cloud_neighbour_radius_m", cloud_neighbour_radius_m);
 }
 
+void OnlineEmSection::load(config::SectionReader& r) {
+  r.read("revisit_budget", online.revisit_budget);
+  r.read("freeze_after", online.freeze_after);
+  r.read("boundary_margin_nats", online.boundary_margin_nats);
+  r.read("sample_cap", online.sample_cap);
+  r.read("seed_window_scans", online.seed_window_scans);
+  r.read("selection_per_scan", online.selection_per_scan);
+  r.read("selection_sample_cap", online.selection_sample_cap);
+  r.read("removal_after_scans", online.removal_after_scans);
+}
+
 bool PlanarEmSection::validate(std::string* why) const {
   if (!(cloud_neighbour_radius_m > 0.0)) {
     *why = "cloud_neighbour_radius_m must be > 0";
@@ -97,11 +108,14 @@ bool PlanarEmSection::validate(std::string* why) const {
 
 MapperConfig loadMapperConfig(const std::filesystem::path& path) {
   MapperConfig cfg{
-      config::IniDocument::load(path), std::make_shared<config::EffectiveConfig>(), {}, {}, {}};
+      config::IniDocument::load(path), std::make_shared<config::EffectiveConfig>(), {}, {}, {}, {}};
   rejectUnknownSections(cfg.doc);
   config::loadOptions(cfg.doc, "Sensors", cfg.sensors, cfg.effective.get());
   config::loadOptions(cfg.doc, "Output", cfg.output, cfg.effective.get());
   config::loadOptions(cfg.doc, "PlanarEM", cfg.planar_em, cfg.effective.get());
+  OnlineEmSection online;
+  config::loadOptions(cfg.doc, "OnlineEM", online, cfg.effective.get());
+  cfg.online_em = online.online;
   return cfg;
 }
 

@@ -2,6 +2,7 @@
 
 #include <mrpt/system/datetime.h>
 
+#include <algorithm>
 #include <chrono>
 
 #include "pmap/common/error.h"
@@ -46,6 +47,10 @@ class RawlogRun {
       : config_(config),
         args_(args),
         result_(result),
+        online_(args.mode == "online" && !args.poses_only
+                    ? std::make_unique<OnlineStage>(config.planar_em.em, config.online_em, args.out,
+                                                    args.snapshot_every)
+                    : nullptr),
         mesh_(config.output.raw_mesh),
         placer_(
             result.map, config.sensors.max_pose_gap_s,
@@ -63,6 +68,7 @@ class RawlogRun {
     input::ObservationSource source(reader, input::RoleClassifier(config_.sensors),
                                     args_.selection);
     ProgressLine progress("planar-mapper", !args_.quiet);
+    Pacer pacer(args_.playback_rate);
     input::InputStep step;
     for (;;) {
       auto t0 = Clock::now();
@@ -71,9 +77,16 @@ class RawlogRun {
       if (!more) {
         break;
       }
+      if (!step.observations.empty()) {
+        pacer.waitFor(mrpt::Clock::toDouble(step.observations.front().obs->timestamp));
+      }
       t0 = Clock::now();
       stage.process(step, args_.rawlog.string());
-      result_.timing.pose_s += since(t0);
+      const double pose_s = since(t0);
+      result_.timing.pose_s += pose_s;
+      if (carriesPoses(step)) {
+        result_.pose_step_ms.push_back(1000.0 * pose_s);
+      }
       t0 = Clock::now();
       collect(step);
       placer_.drain(stage.trajectory(), stage.fixed());
@@ -102,9 +115,21 @@ class RawlogRun {
     }
   }
 
+  static bool carriesPoses(const input::InputStep& step) {
+    return step.action != nullptr || std::any_of(step.observations.begin(), step.observations.end(),
+                                                 [](const input::ObservationItem& o) {
+                                                   return o.roles.pose_laser || o.roles.odometry;
+                                                 });
+  }
+
   void onPlaced(const input::StructureScan& scan, std::size_t record) {
     if (config_.output.raw_map) {
       mesh_.addScan(result_.map, record, scan.rows, scan.cols, scan.organised);
+    }
+    if (online_ && scan.organised) {
+      online_->addScan(result_.map, record);
+    } else if (online_) {
+      unorganised_ = true;
     }
   }
 
@@ -126,6 +151,19 @@ class RawlogRun {
     result_.placement = placer_.stats();
     result_.raw_triangles = mesh_.triangles();
     checkUsable();
+    if (online_ && !unorganised_) {
+      result_.em_mode = "online";
+      result_.timing.em_s = online_->seconds();
+      result_.timing.map_s -= online_->seconds();  // the EM's share of the placing time
+      result_.online = online_->history();
+      em::EmResult em;
+      em.map = online_->map();
+      em.termination = em::Termination::kOnline;
+      em.iterations = static_cast<int>(result_.online.size());
+      em.message = "online over " + std::to_string(em.iterations) + " scans, " +
+                   std::to_string(em.map.surfaces.size()) + " surfaces";
+      result_.em = std::move(em);
+    }
   }
 
   void checkUsable() const {
@@ -156,6 +194,8 @@ class RawlogRun {
   const MapperConfig& config_;
   const MapperArgs& args_;
   MappingResult& result_;
+  std::unique_ptr<OnlineStage> online_;
+  bool unorganised_ = false;
   points::RawMeshBuilder mesh_;
   points::ScanPlacer placer_;
   bool seen_any_ = false;
@@ -196,8 +236,12 @@ MappingResult runPipeline(const MapperConfig& config, const MapperArgs& args) {
   } else {
     RawlogRun(config, args, result).run();
   }
-  if (args.mode == "offline" && !args.poses_only) {
+  const bool online_done = result.em_mode == "online";
+  if (!args.poses_only && (args.mode == "offline" || (args.mode == "online" && !online_done))) {
+    result.em_mode = "offline";  // online falls back for unorganised clouds
     runEm(config, result);
+  } else if (args.mode == "raw" || args.poses_only) {
+    result.em_mode = args.poses_only ? "poses-only" : "raw";
   }
   return result;
 }

@@ -1,7 +1,6 @@
 #include "pmap/points/neighbour_graph.h"
 
-#include <map>
-#include <string>
+#include "pmap/points/grid_keys.h"
 
 namespace pmap::points {
 
@@ -11,28 +10,12 @@ NeighbourGraph neighbourGraph(const PointMap& map, double cloud_radius_m) {
       return {em::nearestNeighbours(map.xyz(), cloud_radius_m), {}};
     }
   }
-  std::vector<em::GridKey> keys(map.size());
-  std::map<std::string, std::pair<std::int32_t, std::int32_t>> sensors;  // label -> group, rank
-  std::int32_t next_group = 0;
+  std::vector<em::GridKey> keys;
+  keys.reserve(map.size());
+  GridKeyer keyer;
   for (const ScanRecord& s : map.scans()) {
-    std::int32_t group = 0;
-    std::int32_t rank = 0;
-    if (s.rows > 1) {  // a range image: its own grid
-      group = next_group++;
-    } else {
-      auto it = sensors.find(s.label);
-      if (it == sensors.end()) {
-        it = sensors.emplace(s.label, std::make_pair(next_group++, 0)).first;
-      }
-      group = it->second.first;
-      rank = it->second.second++;
-    }
-    for (std::size_t k = 0; k < s.num_points; ++k) {
-      const std::size_t p = s.first_point + k;
-      const std::int32_t beam = map.beamIndex()[p];
-      keys[p] = s.rows > 1 ? em::GridKey{group, beam / s.cols, beam % s.cols}
-                           : em::GridKey{group, rank, beam};
-    }
+    const std::vector<em::GridKey> k = keyer.keysOf(map, s);
+    keys.insert(keys.end(), k.begin(), k.end());
   }
   NeighbourGraph g;
   g.neighbours = em::gridNeighbours(keys);

@@ -22,6 +22,19 @@ struct GridKey {
   std::int32_t group = 0;
   std::int32_t row = 0;
   std::int32_t col = 0;
+  bool operator==(const GridKey& o) const {
+    return group == o.group && row == o.row && col == o.col;
+  }
+};
+
+/// Hash of a GridKey (all 96 bits take part).
+struct GridKeyHash {
+  std::size_t operator()(const GridKey& k) const noexcept {
+    std::uint64_t h = static_cast<std::uint32_t>(k.group);
+    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k.row);
+    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k.col);
+    return static_cast<std::size_t>(h ^ (h >> 29));
+  }
 };
 
 /// Neighbours on the same group at row +-1 or col +-1 (duplicate keys: the

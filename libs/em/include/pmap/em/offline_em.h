@@ -28,7 +28,8 @@ struct IterationRecord {
   SelectionChanges changes;         ///< model selection made before this iteration's E-step
 };
 
-enum class Termination { kConverged, kMaxIterations, kNoPoints };
+/// kOnline: the map of the online EM (updated scan by scan, no termination).
+enum class Termination { kConverged, kMaxIterations, kNoPoints, kOnline };
 const char* toString(Termination t);
 
 struct PlanarMap {

@@ -25,7 +25,14 @@ struct SplitProposal {
   std::vector<std::int32_t> part_b;
 };
 
-/// Residual-patch split of `members` (the surface's hard points).
+/// Residual-patch splits of `members` (the surface's hard points): one
+/// proposal per connected group of off-plane cells, largest first.
+std::vector<SplitProposal> residualSplits(const std::vector<Eigen::Vector3d>& points,
+                                          const std::vector<std::int32_t>& members,
+                                          const Rectangle& rect, double cell_m, double min_offset_m,
+                                          double sigma, std::size_t min_part);
+
+/// The largest of residualSplits, if any.
 std::optional<SplitProposal> residualSplit(const std::vector<Eigen::Vector3d>& points,
                                            const std::vector<std::int32_t>& members,
                                            const Rectangle& rect, double cell_m,

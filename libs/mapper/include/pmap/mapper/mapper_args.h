@@ -17,9 +17,11 @@ struct MapperArgs {
   std::filesystem::path cloud;   ///< --cloud FILE.ply instead of a rawlog
   std::filesystem::path poses;   ///< --poses FILE: given poses instead of ICP
   std::filesystem::path out = "planar-mapper-out";
-  /// offline: EM over all measurements at the end; raw: points and the raw
-  /// map only.
-  std::string mode = "offline";
+  /// online: the map is updated after every scan (default); offline: EM over
+  /// all measurements at the end; raw: points and the raw map only.
+  std::string mode = "online";
+  int snapshot_every = 0;      ///< online: write the map every N structure scans
+  double playback_rate = 0.0;  ///< feed scans at R x their recorded pace (0: at once)
   bool poses_only = false;
   bool accept_truncated = false;
   bool quiet = false;  ///< no progress line

@@ -10,6 +10,7 @@
 
 #include "pmap/config/effective_config.h"
 #include "pmap/config/ini_document.h"
+#include "pmap/em/online_em_options.h"
 #include "pmap/em/planar_em_options.h"
 #include "pmap/input/sensor_roles.h"
 #include "pmap/points/raw_mesh.h"
@@ -37,12 +38,20 @@ struct PlanarEmSection {
   bool validate(std::string* why) const;
 };
 
+/// [OnlineEM]: the online EM's bounds (libs/em, doc/em.md).
+struct OnlineEmSection {
+  em::OnlineEmOptions online;
+  void load(config::SectionReader& reader);
+  bool validate(std::string* why) const { return online.validate(why); }
+};
+
 struct MapperConfig {
   config::IniDocument doc;
   std::shared_ptr<config::EffectiveConfig> effective;
   input::SensorsOptions sensors;
   OutputOptions output;
   PlanarEmSection planar_em;
+  em::OnlineEmOptions online_em;
 };
 
 /// Loads and validates the project's sections; rejects sections nobody owns.

@@ -15,6 +15,7 @@
 #include "pmap/input/structure_points.h"
 #include "pmap/mapper/mapper_args.h"
 #include "pmap/mapper/mapper_config.h"
+#include "pmap/mapper/online_stage.h"
 #include "pmap/points/point_map.h"
 #include "pmap/points/scan_placer.h"
 #include "pmap/poses/icp_pose_tracker.h"
@@ -43,7 +44,15 @@ struct MappingResult {
   double last_time = 0;
   StageTiming timing;
   std::string truncation;          ///< non-empty: accepted truncation message
-  std::optional<em::EmResult> em;  ///< the planar map (mode offline)
+  std::optional<em::EmResult> em;  ///< the planar map (modes online and offline)
+  /// Online mode: one record per structure scan fed to the online EM.
+  std::vector<OnlineRecord> online;
+  /// Wall time of the pose stage for each input step that carried pose
+  /// observations (ms).
+  std::vector<double> pose_step_ms;
+  /// What actually ran: online, offline, raw (online falls back to offline
+  /// for unorganised clouds, which have no scan order).
+  std::string em_mode;
   double duration() const { return last_time > first_time ? last_time - first_time : 0.0; }
 };
 

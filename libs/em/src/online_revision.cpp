@@ -1,0 +1,190 @@
+// Online fusion and splits: every surface keeps being re-examined (round
+// robin), on a capped subsample of its points, so a door first absorbed by
+// its wall is split off by later data and its early points change surface.
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "pmap/em/model_selection.h"
+#include "pmap/em/online_em.h"
+#include "pmap/em/planarity.h"
+#include "pmap/em/split_proposals.h"
+
+namespace pmap::em {
+namespace {
+
+double rectangleGap(const Rectangle& a, const Rectangle& b) {
+  double gap2 = std::min(a.squaredDistance(b.centre), b.squaredDistance(a.centre));
+  for (const auto& c : a.corners()) {
+    gap2 = std::min(gap2, b.squaredDistance(c));
+  }
+  for (const auto& c : b.corners()) {
+    gap2 = std::min(gap2, a.squaredDistance(c));
+  }
+  return std::sqrt(gap2);
+}
+
+std::vector<std::int32_t> merged(std::vector<std::int32_t> a, const std::vector<std::int32_t>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  std::sort(a.begin(), a.end());
+  a.erase(std::unique(a.begin(), a.end()), a.end());
+  return a;
+}
+
+}  // namespace
+
+bool OnlineEm::tryFuse(std::int32_t j) {
+  OnlineSurface& a = surfaces_[static_cast<std::size_t>(j)];
+  std::set<std::int32_t> partners;
+  std::vector<std::int32_t> cand;
+  for (const Eigen::Vector3d& c : a.rect.corners()) {
+    index_.candidates(c, cand);
+    partners.insert(cand.begin(), cand.end());
+  }
+  const double cos_max = std::cos(options_.fuse_angle_deg * M_PI / 180.0);
+  for (const std::int32_t k : partners) {
+    OnlineSurface& b = surfaces_[static_cast<std::size_t>(k)];
+    if (k == j || !b.alive || std::abs(a.rect.normal.dot(b.rect.normal)) < cos_max ||
+        std::abs(a.rect.planeDistance(b.rect.centre)) > options_.fuse_offset_m ||
+        std::abs(b.rect.planeDistance(a.rect.centre)) > options_.fuse_offset_m ||
+        rectangleGap(a.rect, b.rect) > options_.fuse_gap_m + options_.fuse_offset_m) {
+      continue;
+    }
+    const int half = online_.selection_sample_cap / 2;
+    const std::vector<std::int32_t> sa = sampleMembers(a, half);
+    const std::vector<std::int32_t> sb = sampleMembers(b, half);
+    Rectangle m = a.members.size() >= b.members.size() ? a.rect : b.rect;
+    if (fitSurface(points_, merged(merged(merged(sa, sb), a.hull), b.hull), m) != FitStatus::kOk ||
+        isCurved(measurePlanarity(points_, merged(sa, sb), m), options_.min_curvature_radius_m)) {
+      continue;
+    }
+    // Hard-score change on the subsamples, scaled to all members.
+    double gain = options_.kappa;
+    for (const auto* part : {&a, &b}) {
+      const std::vector<std::int32_t>& sample = part == &a ? sa : sb;
+      double sum = 0.0;
+      for (const std::int32_t i : sample) {
+        const Eigen::Vector3d& p = points_[static_cast<std::size_t>(i)];
+        sum += std::max(model_.surfaceScore(m.squaredDistance(p)), model_.outlierScore()) -
+               model_.surfaceScore(part->rect.squaredDistance(p));
+      }
+      gain += sample.empty() ? 0.0
+                             : sum * static_cast<double>(part->members.size()) /
+                                   static_cast<double>(sample.size());
+    }
+    if (gain <= options_.min_gain) {
+      continue;
+    }
+    const std::vector<std::int32_t> all = merged(a.members, b.members);
+    const double cell = options_.split_cell_m;
+    gain += options_.empty_area_cost *
+            (emptyArea(points_, a.members, a.rect, cell) +
+             emptyArea(points_, b.members, b.rect, cell) - emptyArea(points_, all, m, cell));
+    if (gain <= options_.min_gain) {
+      continue;
+    }
+    const std::vector<std::int32_t> moving = b.members;
+    const std::vector<std::int32_t> hull = merged(a.hull, b.hull);
+    a.rect = m;
+    removeSurface(k);
+    for (const std::int32_t i : moving) {
+      assign(static_cast<std::size_t>(i), j);
+    }
+    a.hull = hull;
+    a.id = next_id_++;
+    index_.update(j, a.rect);
+    return true;
+  }
+  return false;
+}
+
+bool OnlineEm::trySplit(std::int32_t j) {
+  OnlineSurface& s = surfaces_[static_cast<std::size_t>(j)];
+  if (s.members.size() < 2 * static_cast<std::size_t>(options_.min_support)) {
+    return false;
+  }
+  const std::vector<std::int32_t> sample =
+      merged(sampleMembers(s, online_.selection_sample_cap), s.hull);
+  const double scale = static_cast<double>(s.members.size()) / static_cast<double>(sample.size());
+  const auto min_part =
+      static_cast<std::size_t>(std::max(8.0, static_cast<double>(options_.min_support) / scale));
+  // Cells coarse enough that a subsample still covers a fully seen surface.
+  const double cell = std::max(options_.split_cell_m,
+                               1.5 * std::sqrt(s.rect.area() / static_cast<double>(sample.size())));
+  // How much worse each sampled point is explained without this surface.
+  std::vector<double> loss;
+  std::vector<std::int32_t> cand;
+  for (const std::int32_t i : sample) {
+    const Eigen::Vector3d& p = points_[static_cast<std::size_t>(i)];
+    index_.candidates(p, cand);
+    double other = model_.outlierScore();
+    for (const std::int32_t k : cand) {
+      if (k != j) {
+        other = std::max(
+            other,
+            model_.surfaceScore(surfaces_[static_cast<std::size_t>(k)].rect.squaredDistance(p)));
+      }
+    }
+    loss.push_back(std::max(0.0, model_.surfaceScore(s.rect.squaredDistance(p)) - other) * scale);
+  }
+  std::vector<std::vector<std::vector<std::int32_t>>> options;
+  for (const SplitProposal& p : residualSplits(
+           points_, sample, s.rect, cell, options_.split_min_offset_m, model_.sigma(), min_part)) {
+    options.push_back({p.part_a, p.part_b});
+  }
+  if (auto c = coverageCut(points_, sample, loss, s.rect, cell, options_.empty_area_cost,
+                           options_.kappa, min_part, !s.trimmed)) {
+    if (c->keep == CutKeep::kBoth) {
+      options.push_back({c->parts.part_a, c->parts.part_b});
+    } else {
+      options.push_back({c->keep == CutKeep::kPartA ? c->parts.part_a : c->parts.part_b});
+    }
+  }
+  for (const auto& parts : options) {
+    std::vector<Rectangle> rects;
+    for (const auto& part : parts) {
+      Rectangle r = s.rect;
+      if (fitSurface(points_, part, r) != FitStatus::kOk ||
+          isCurved(measurePlanarity(points_, part, r), options_.min_curvature_radius_m)) {
+        break;
+      }
+      rects.push_back(r);
+    }
+    if (rects.size() != parts.size()) {
+      continue;
+    }
+    double gain = -options_.kappa * static_cast<double>(rects.size() - 1) +
+                  options_.empty_area_cost * emptyArea(points_, sample, s.rect, cell);
+    for (std::size_t k = 0; k < rects.size(); ++k) {
+      gain -= options_.empty_area_cost * emptyArea(points_, parts[k], rects[k], cell);
+    }
+    for (std::size_t n = 0; n < sample.size(); ++n) {
+      const Eigen::Vector3d& p = points_[static_cast<std::size_t>(sample[n])];
+      double now = model_.surfaceScore(s.rect.squaredDistance(p)) - loss[n] / scale;
+      for (const Rectangle& r : rects) {
+        now = std::max(now, model_.surfaceScore(r.squaredDistance(p)));
+      }
+      gain += (now - model_.surfaceScore(s.rect.squaredDistance(p))) * scale;
+    }
+    if (gain <= options_.min_gain) {
+      continue;
+    }
+    // Apply: the surface becomes the first part; every member is re-derived.
+    const std::vector<std::int32_t> members = s.members;
+    s.rect = rects[0];
+    s.trimmed = s.trimmed || rects.size() == 1;
+    s.id = next_id_++;
+    s.hull.clear();
+    index_.update(j, s.rect);
+    if (rects.size() > 1) {
+      createSurface(rects[1], {});
+    }
+    for (const std::int32_t i : members) {
+      assign(static_cast<std::size_t>(i), evaluate(static_cast<std::size_t>(i)).best);
+    }
+    return true;
+  }
+  return false;
+}
+
+}  // namespace pmap::em

@@ -1,0 +1,65 @@
+// The online EM inside the pipeline: every placed structure scan updates the
+// map at once (paper section V); the per-scan EM time is measured here, and
+// the map can be written every N scans to look at it mid-run.
+#pragma once
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "pmap/em/online_em.h"
+#include "pmap/points/grid_keys.h"
+#include "pmap/points/point_map.h"
+
+namespace pmap::mapper {
+
+/// One scan's online update, for summary.json and online.csv.
+struct OnlineRecord {
+  std::int64_t scan = -1;  ///< structure scan index in the file
+  double em_ms = 0;        ///< the EM update alone
+  int surfaces = 0;
+  std::size_t points = 0;  ///< measurements in the map so far
+  em::OnlineUpdate update;
+};
+
+class OnlineStage {
+ public:
+  /// `snapshot_every` > 0 writes DIR/snapshots/map_NNNNNN.wrl every so many scans.
+  OnlineStage(const em::PlanarEmOptions& em, const em::OnlineEmOptions& online,
+              std::filesystem::path out_dir, int snapshot_every);
+
+  /// Feeds the scan `record` of `map` (just placed).
+  void addScan(const points::PointMap& map, std::size_t record);
+
+  const std::vector<OnlineRecord>& history() const { return history_; }
+  double seconds() const { return seconds_; }
+  em::PlanarMap map() const { return em_.map(); }
+
+ private:
+  void writeSnapshot(const points::PointMap& map) const;
+
+  em::OnlineEm em_;
+  points::GridKeyer keyer_;
+  std::filesystem::path out_dir_;
+  int snapshot_every_;
+  std::vector<OnlineRecord> history_;
+  double seconds_ = 0;
+};
+
+/// Paces a replay at `rate` times the recorded speed (0: as fast as possible).
+class Pacer {
+ public:
+  explicit Pacer(double rate) : rate_(rate) {}
+  /// Waits until the wall time since the first call reaches
+  /// (t - first t) / rate.
+  void waitFor(double t);
+
+ private:
+  double rate_;
+  bool started_ = false;
+  double t0_ = 0;
+  std::chrono::steady_clock::time_point wall0_;
+};
+
+}  // namespace pmap::mapper

@@ -1,0 +1,65 @@
+#include "pmap/mapper/online_stage.h"
+
+#include <chrono>
+#include <cstdio>
+#include <thread>
+
+#include "pmap/common/atomic_file.h"
+#include "pmap/products/planar_map_files.h"
+
+namespace pmap::mapper {
+
+OnlineStage::OnlineStage(const em::PlanarEmOptions& em, const em::OnlineEmOptions& online,
+                         std::filesystem::path out_dir, int snapshot_every)
+    : em_(em, online), out_dir_(std::move(out_dir)), snapshot_every_(snapshot_every) {}
+
+void OnlineStage::addScan(const points::PointMap& map, std::size_t record) {
+  const points::ScanRecord& s = map.scans()[record];
+  const std::vector<em::GridKey> keys = keyer_.keysOf(map, s);
+  const std::vector<Eigen::Vector3d> pts(
+      map.xyz().begin() + static_cast<std::ptrdiff_t>(s.first_point),
+      map.xyz().begin() + static_cast<std::ptrdiff_t>(s.first_point + s.num_points));
+  const auto t0 = std::chrono::steady_clock::now();
+  OnlineRecord r;
+  r.update = em_.addScan(pts, keys);
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  seconds_ += secs;
+  r.scan = s.index;
+  r.em_ms = 1000.0 * secs;
+  r.surfaces = em_.surfaceCount();
+  r.points = em_.points();
+  history_.push_back(r);
+  if (snapshot_every_ > 0 && history_.size() % static_cast<std::size_t>(snapshot_every_) == 0) {
+    writeSnapshot(map);
+  }
+}
+
+void OnlineStage::writeSnapshot(const points::PointMap& map) const {
+  const std::filesystem::path dir = out_dir_ / "snapshots";
+  ensureWritableDirectory(dir);
+  char name[64];
+  std::snprintf(name, sizeof name, "map_%06zu.wrl", history_.size());
+  const em::PlanarMap m = em_.map();
+  std::vector<Eigen::Vector3d> pts(map.xyz().begin(),
+                                   map.xyz().begin() + static_cast<std::ptrdiff_t>(em_.points()));
+  products::writeVrml(
+      dir / name, products::planarMapMeshes(m, pts),
+      "planar-mapper online map after " + std::to_string(history_.size()) + " structure scans");
+}
+
+void Pacer::waitFor(double t) {
+  if (rate_ <= 0.0) {
+    return;
+  }
+  if (!started_) {
+    started_ = true;
+    t0_ = t;
+    wall0_ = std::chrono::steady_clock::now();
+    return;
+  }
+  const auto due = wall0_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                std::chrono::duration<double>((t - t0_) / rate_));
+  std::this_thread::sleep_until(due);
+}
+
+}  // namespace pmap::mapper

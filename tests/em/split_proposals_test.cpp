@@ -1,0 +1,211 @@
+#include "pmap/em/split_proposals.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <iostream>
+#include <random>
+
+#include "em_test_worlds.h"
+#include "pmap/em/surface_fit.h"
+
+namespace pmap::em {
+namespace {
+
+using testing::allIndices;
+
+// The axis-aligned rectangle [x0, x1] x [y0, y1] of the plane z = 0.
+Rectangle box(double x0, double x1, double y0, double y1) {
+  Rectangle r;
+  r.centre = {0.5 * (x0 + x1), 0.5 * (y0 + y1), 0.0};
+  r.half_u = 0.5 * (x1 - x0);
+  r.half_v = 0.5 * (y1 - y0);
+  return r;
+}
+
+// An L: the long arm [0, 8] x [0, 2] and the short arm [0, 2] x (2, 5].
+testing::Cloud lShape(double step) {
+  testing::Cloud c;
+  std::mt19937_64 rng(1);
+  testing::addPlane(c, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 8.0, 5.0, step, 0.0, rng, 0,
+                    [](double x, double y) { return y <= 2.0 + 1e-9 || x <= 2.0 + 1e-9; });
+  return c;
+}
+
+TEST(CoverageCut, AnLIsCutInTwoWhereTheLargerPartIsLargest) {
+  const testing::Cloud c = lShape(0.1);
+  const auto members = allIndices(c.points.size());
+  const std::vector<double> loss(members.size(), 5.0);
+  const auto cut =
+      coverageCut(c.points, members, loss, box(0, 8, 0, 5), 0.15, 20.0, 200.0, 60, true);
+  ASSERT_TRUE(cut.has_value());
+  EXPECT_EQ(cut->keep, CutKeep::kBoth);
+  // Both ways of cutting the L leave two full rectangles; the chosen one
+  // keeps the corner with the long arm (81 x 21 points).
+  const auto& a = cut->parts.part_a;
+  const auto& b = cut->parts.part_b;
+  EXPECT_EQ(a.size() + b.size(), members.size());
+  EXPECT_EQ(std::max(a.size(), b.size()), 81u * 21u);
+  const auto& longer = a.size() > b.size() ? a : b;
+  for (const std::int32_t i : longer) {
+    EXPECT_LE(c.points[i].y(), 2.0 + 1e-9);
+  }
+  // Empty area saved: 40 m^2 bounding box - 22 m^2 covered, minus kappa.
+  EXPECT_NEAR(cut->estimated_gain, 20.0 * 18.0 - 200.0, 20.0);
+}
+
+TEST(CoverageCut, ADenseRectangleWithASparseStripIsTrimmed) {
+  testing::Cloud c;
+  std::mt19937_64 rng(2);
+  testing::addPlane(c, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 2.0, 2.0, 0.05, 0.0, rng, 0);
+  const std::size_t dense = c.points.size();
+  for (int k = 0; k < 10; ++k) {
+    c.points.emplace_back(2.3 + 0.3 * k, 1.0, 0.0);  // a thin strip out to x = 5
+  }
+  const auto members = allIndices(c.points.size());
+  const std::vector<double> no_loss(members.size(), 0.0);
+  const Rectangle r = box(0, 5, 0, 2);
+  const auto cut = coverageCut(c.points, members, no_loss, r, 0.15, 20.0, 200.0, 60, true);
+  ASSERT_TRUE(cut.has_value());
+  EXPECT_EQ(cut->keep, CutKeep::kPartA);
+  EXPECT_EQ(cut->parts.part_a, allIndices(dense));
+  EXPECT_EQ(cut->parts.part_b.size(), 10u);
+  EXPECT_GT(cut->estimated_gain, 0.0);
+  // Without trims nothing gains (the strip is too small to be a part).
+  EXPECT_FALSE(coverageCut(c.points, members, no_loss, r, 0.15, 20.0, 200.0, 60, false));
+  // When the strip's points would be badly lost, no trim either.
+  const std::vector<double> big_loss(members.size(), 100.0);
+  const auto kept = coverageCut(c.points, members, big_loss, r, 0.15, 20.0, 200.0, 60, true);
+  EXPECT_TRUE(!kept || kept->keep != CutKeep::kPartA);
+}
+
+TEST(CoverageCut, WithoutTrimsOnlyCutsKeepingBothParts) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int cuts = 0;
+  for (int t = 0; t < 60; ++t) {
+    // Random unions of two or three axis-aligned blocks of random density.
+    testing::Cloud c;
+    const int blocks = 2 + t % 2;
+    for (int b = 0; b < blocks; ++b) {
+      const double x0 = 4 * u(rng), y0 = 4 * u(rng);
+      testing::addPlane(c, {x0, y0, 0}, {1, 0, 0}, {0, 1, 0}, 0.2 + 3 * u(rng), 0.2 + 3 * u(rng),
+                        0.05 + 0.3 * u(rng), 0.0, rng, b);
+    }
+    const auto members = allIndices(c.points.size());
+    std::vector<double> loss(members.size());
+    for (double& l : loss) {
+      l = t % 3 == 0 ? 0.0 : 2.0 * u(rng);
+    }
+    Rectangle r;
+    ASSERT_EQ(fitSurface(c.points, members, r), FitStatus::kOk);
+    const auto cut = coverageCut(c.points, members, loss, r, 0.15, 20.0, 50.0, 20, false);
+    if (cut) {
+      ++cuts;
+      EXPECT_EQ(cut->keep, CutKeep::kBoth);
+      EXPECT_GE(cut->parts.part_a.size(), 20u);
+      EXPECT_GE(cut->parts.part_b.size(), 20u);
+      EXPECT_EQ(cut->parts.part_a.size() + cut->parts.part_b.size(), members.size());
+      EXPECT_GT(cut->estimated_gain, 0.0);
+    }
+  }
+  EXPECT_GT(cuts, 5);
+}
+
+TEST(CoverageCut, AFullRectangleOrTooFewMembersGiveNoCut) {
+  testing::Cloud c;
+  std::mt19937_64 rng(4);
+  testing::addPlane(c, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 3.0, 2.0, 0.05, 0.0, rng, 0);
+  const auto members = allIndices(c.points.size());
+  const std::vector<double> loss(members.size(), 0.0);
+  EXPECT_FALSE(coverageCut(c.points, members, loss, box(0, 3, 0, 2), 0.15, 20, 200, 60, true));
+  EXPECT_FALSE(coverageCut(c.points, {}, {}, box(0, 3, 0, 2), 0.15, 20, 200, 60, true));
+  EXPECT_FALSE(coverageCut(c.points, {0, 1, 2}, {0, 0, 0}, box(0, 3, 0, 2), 0.15, 20, 0, 60, true));
+}
+
+// A wall with a door 10 cm behind it (noise 2 cm).
+struct RecessedDoor {
+  testing::Cloud cloud;
+  std::vector<std::int32_t> door;
+  Rectangle rect;
+  RecessedDoor(double depth, double noise, double step = 0.03) {
+    testing::CorridorSpec s;
+    s.step = step;
+    s.length = 4.0;
+    s.height = 2.5;
+    s.door_depth = depth;
+    s.sigma = noise;
+    s.ceiling = false;
+    std::mt19937_64 rng(5);
+    testing::Cloud all;
+    testing::addCorridor(all, s, rng);
+    std::vector<std::int32_t> wall;
+    for (std::size_t i = 0; i < all.points.size(); ++i) {
+      if (all.points[i].y() < 0.5) {  // the left wall only
+        const Eigen::Vector3d& p = all.points[i];
+        const bool in_door = p.x() >= s.door_x0 && p.x() <= s.door_x1 && p.z() < s.door_height;
+        (in_door ? door : wall).push_back(static_cast<std::int32_t>(cloud.points.size()));
+        cloud.points.push_back(p);
+      }
+    }
+    // The wall's plane (as EM finds it once the door is a surface of its
+    // own), spanning wall and door.
+    EXPECT_EQ(fitSurface(cloud.points, wall, rect), FitStatus::kOk);
+    Rectangle span = rect;
+    EXPECT_EQ(fitRectangle(cloud.points, allIndices(cloud.points.size()), span), FitStatus::kOk);
+    rect = span;
+  }
+};
+
+// ~25 points per 15 cm cell. (At 5 cm sampling, ~9 per cell, the jitter
+// leaves cells under the 8-point minimum, which cut the door's flagged cells
+// into pieces: the part is then only the largest piece, see below.)
+TEST(ResidualSplit, APatchTenCentimetresBehindIsSplitOff) {
+  for (const double sigma : {0.02, 0.05}) {
+    const RecessedDoor w(0.10, 0.02);
+    const auto p = residualSplit(w.cloud.points, allIndices(w.cloud.points.size()), w.rect, 0.15,
+                                 0.04, sigma, 60);
+    ASSERT_TRUE(p.has_value()) << "sigma " << sigma;
+    // part_a is the patch: most door points, few wall points (those sharing
+    // a 15 cm cell with the door along its edges, which cells do not follow).
+    std::size_t door_in_a = 0;
+    for (const std::int32_t i : p->part_a) {
+      door_in_a += std::binary_search(w.door.begin(), w.door.end(), i) ? 1 : 0;
+    }
+    EXPECT_GT(door_in_a, 0.85 * w.door.size());
+    EXPECT_LT(p->part_a.size() - door_in_a, 0.1 * p->part_a.size());
+    EXPECT_EQ(p->part_a.size() + p->part_b.size(), w.cloud.points.size());
+  }
+}
+
+TEST(ResidualSplit, AtSparseSamplingThePatchIsStillProposedInPart) {
+  const RecessedDoor w(0.10, 0.02, 0.05);
+  const auto p = residualSplit(w.cloud.points, allIndices(w.cloud.points.size()), w.rect, 0.15,
+                               0.04, 0.02, 60);
+  ASSERT_TRUE(p.has_value());
+  std::size_t door_in_a = 0;
+  for (const std::int32_t i : p->part_a) {
+    door_in_a += std::binary_search(w.door.begin(), w.door.end(), i) ? 1 : 0;
+  }
+  std::cout << "5 cm sampling: the residual part holds " << door_in_a << " of " << w.door.size()
+            << " door points (" << p->part_a.size() - door_in_a << " wall points)\n";
+  EXPECT_GE(door_in_a, 60u);
+  EXPECT_LT(p->part_a.size() - door_in_a, 0.05 * p->part_a.size());
+}
+
+TEST(ResidualSplit, AFlatWallOrAShallowPatchIsNotSplit) {
+  const RecessedDoor flat(0.0, 0.02);
+  const auto all = allIndices(flat.cloud.points.size());
+  EXPECT_FALSE(residualSplit(flat.cloud.points, all, flat.rect, 0.15, 0.04, 0.02, 60));
+  const RecessedDoor shallow(0.02, 0.005);  // 2 cm: below split_min_offset_m
+  EXPECT_FALSE(residualSplit(shallow.cloud.points, allIndices(shallow.cloud.points.size()),
+                             shallow.rect, 0.15, 0.04, 0.005, 60));
+  // Fewer than two parts' worth of members.
+  const RecessedDoor door(0.10, 0.02);
+  EXPECT_FALSE(
+      residualSplit(door.cloud.points, door.door, door.rect, 0.15, 0.04, 0.02, door.door.size()));
+  EXPECT_FALSE(residualSplit(door.cloud.points, {}, door.rect, 0.15, 0.04, 0.02, 3));
+}
+
+}  // namespace
+}  // namespace pmap::em
