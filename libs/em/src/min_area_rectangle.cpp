@@ -1,6 +1,7 @@
 #include "pmap/em/min_area_rectangle.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -36,7 +37,53 @@ Rect2D boxAlong(const std::vector<Eigen::Vector2d>& pts, const Eigen::Vector2d& 
 
 }  // namespace
 
+namespace {
+
+// Akl-Toussaint: points strictly inside the octagon of the extreme points in
+// 8 directions cannot be on the hull; on a dense surface that is nearly all
+// of them, so the sort below sees only a thin boundary band.
+void dropInterior(std::vector<Eigen::Vector2d>& p) {
+  const Eigen::Vector2d dirs[8] = {{1, 0},  {1, 1},   {0, 1},  {-1, 1},
+                                   {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
+  std::array<std::size_t, 8> ext{};
+  for (std::size_t i = 1; i < p.size(); ++i) {
+    for (int d = 0; d < 8; ++d) {
+      if (dirs[d].dot(p[i]) > dirs[d].dot(p[ext[static_cast<std::size_t>(d)]])) {
+        ext[static_cast<std::size_t>(d)] = i;
+      }
+    }
+  }
+  std::vector<Eigen::Vector2d> poly;
+  for (const std::size_t e : ext) {
+    if (poly.empty() || poly.back() != p[e]) {
+      poly.push_back(p[e]);
+    }
+  }
+  if (poly.size() < 3) {
+    return;
+  }
+  auto strictly_inside = [&](const Eigen::Vector2d& q) {
+    for (std::size_t k = 0; k < poly.size(); ++k) {
+      const Eigen::Vector2d& a = poly[k];
+      const Eigen::Vector2d& b = poly[(k + 1) % poly.size()];
+      if (a == b) {
+        continue;
+      }
+      if ((b.x() - a.x()) * (q.y() - a.y()) - (b.y() - a.y()) * (q.x() - a.x()) <= 0) {
+        return false;  // on or outside an edge (the octagon is counter-clockwise)
+      }
+    }
+    return true;
+  };
+  p.erase(std::remove_if(p.begin(), p.end(), strictly_inside), p.end());
+}
+
+}  // namespace
+
 std::vector<Eigen::Vector2d> convexHull(std::vector<Eigen::Vector2d> p) {
+  if (p.size() > 64) {
+    dropInterior(p);
+  }
   std::sort(p.begin(), p.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
     return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
   });
@@ -134,6 +181,71 @@ Rect2D probedMinAreaRectangle(const std::vector<Eigen::Vector2d>& points, double
     }
   }
   return best;
+}
+
+}  // namespace pmap::em
+
+namespace pmap::em {
+
+std::vector<std::size_t> convexHullIndices(const std::vector<Eigen::Vector2d>& points) {
+  // Andrew's monotone chain over sorted indices, after the same interior
+  // filter as convexHull.
+  std::vector<Eigen::Vector2d> kept = points;
+  if (kept.size() > 64) {
+    dropInterior(kept);
+  }
+  std::vector<std::size_t> idx;
+  idx.reserve(kept.size());
+  {
+    // Map the kept points back to input indices (first occurrence wins).
+    std::vector<std::size_t> order(points.size());
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      order[i] = i;
+    }
+    auto less = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+      return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+    };
+    if (kept.size() == points.size()) {
+      std::stable_sort(order.begin(), order.end(),
+                       [&](std::size_t x, std::size_t y) { return less(points[x], points[y]); });
+      idx = order;
+    } else {
+      std::vector<char> keep(points.size(), 0);
+      std::sort(kept.begin(), kept.end(), less);
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        keep[i] = std::binary_search(kept.begin(), kept.end(), points[i], less) ? 1 : 0;
+      }
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        if (keep[i]) {
+          idx.push_back(i);
+        }
+      }
+      std::stable_sort(idx.begin(), idx.end(),
+                       [&](std::size_t x, std::size_t y) { return less(points[x], points[y]); });
+    }
+    idx.erase(std::unique(idx.begin(), idx.end(),
+                          [&](std::size_t x, std::size_t y) { return points[x] == points[y]; }),
+              idx.end());
+  }
+  if (idx.size() < 3) {
+    return idx;
+  }
+  std::vector<std::size_t> hull(2 * idx.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < idx.size(); ++i) {
+    while (k >= 2 && cross(points[hull[k - 2]], points[hull[k - 1]], points[idx[i]]) <= 0) {
+      --k;
+    }
+    hull[k++] = idx[i];
+  }
+  for (std::size_t i = idx.size() - 1, t = k + 1; i-- > 0;) {
+    while (k >= t && cross(points[hull[k - 2]], points[hull[k - 1]], points[idx[i]]) <= 0) {
+      --k;
+    }
+    hull[k++] = idx[i];
+  }
+  hull.resize(k - 1);
+  return hull;
 }
 
 }  // namespace pmap::em

@@ -4,40 +4,10 @@
 #include <cassert>
 #include <cmath>
 
-#include "pmap/em/min_area_rectangle.h"
+#include "pmap/em/model_selection.h"
 #include "pmap/em/model_selector.h"
 
 namespace pmap::em {
-namespace {
-
-// Indices (into `members`) of the convex hull of their 2D projections.
-std::vector<std::int32_t> hullOf(const std::vector<Eigen::Vector3d>& points,
-                                 const std::vector<std::int32_t>& members, const Rectangle& rect) {
-  std::vector<std::pair<Eigen::Vector2d, std::int32_t>> uv;
-  const Eigen::Vector3d v = rect.axisV();
-  for (const std::int32_t i : members) {
-    const Eigen::Vector3d d = points[static_cast<std::size_t>(i)] - rect.centre;
-    uv.push_back({{rect.axis_u.dot(d), v.dot(d)}, i});
-  }
-  std::vector<Eigen::Vector2d> flat;
-  for (const auto& e : uv) {
-    flat.push_back(e.first);
-  }
-  const std::vector<Eigen::Vector2d> hull = convexHull(flat);
-  std::vector<std::int32_t> out;
-  for (const Eigen::Vector2d& h : hull) {
-    for (const auto& e : uv) {
-      if (e.first == h) {
-        out.push_back(e.second);
-        break;
-      }
-    }
-  }
-  return out;
-}
-
-}  // namespace
-
 OnlineEm::OnlineEm(const PlanarEmOptions& em, const OnlineEmOptions& online)
     : options_(em),
       online_(online),
@@ -56,38 +26,88 @@ int OnlineEm::surfaceCount() const {
 void OnlineEm::appendScan(const std::vector<Eigen::Vector3d>& points,
                           const std::vector<GridKey>& keys) {
   const std::size_t first = points_.size();
+  // Keys of this scan, and for the previous row only the last stored row of
+  // each group: memory and time bounded by the scan, not the map.
+  std::unordered_map<GridKey, std::int32_t, GridKeyHash> here;
   for (std::size_t k = 0; k < points.size(); ++k) {
     const auto i = static_cast<std::int32_t>(points_.size());
-    const GridKey& g = keys[k];
     points_.push_back(points[k]);
-    rows_.push_back(g.row);
+    rows_.push_back(keys[k].row);
     best_.push_back(-1);
     member_pos_.push_back(-1);
     visits_.push_back(0);
     queued_.push_back(0);
     not_planar_.push_back(0);
-    index_of_key_.emplace(g, i);
+    seed_tries_.push_back(0);
     neighbours_.push_back({-1, -1, -1, -1});
-    // Link with the neighbours already present (previous beam, next beam,
-    // previous scan); the next scan links itself when it comes.
-    const GridKey nb[3] = {
-        {g.group, g.row, g.col - 1}, {g.group, g.row, g.col + 1}, {g.group, g.row - 1, g.col}};
-    const int slot_here[3] = {0, 1, 2};
-    const int slot_there[3] = {1, 0, 3};
-    for (int s = 0; s < 3; ++s) {
-      const auto it = index_of_key_.find(nb[s]);
-      if (it != index_of_key_.end() && it->second != i) {
-        neighbours_[static_cast<std::size_t>(i)][static_cast<std::size_t>(slot_here[s])] =
-            it->second;
-        neighbours_[static_cast<std::size_t>(it->second)][static_cast<std::size_t>(slot_there[s])] =
-            i;
-      }
+    here.emplace(keys[k], i);
+  }
+  auto link = [&](std::int32_t i, std::int32_t n, int slot_here, int slot_there) {
+    if (n >= 0 && n != i) {
+      neighbours_[static_cast<std::size_t>(i)][static_cast<std::size_t>(slot_here)] = n;
+      neighbours_[static_cast<std::size_t>(n)][static_cast<std::size_t>(slot_there)] = i;
+    }
+  };
+  auto find = [&](const GridKey& g) -> std::int32_t {
+    const auto it = here.find(g);
+    return it == here.end() ? -1 : it->second;
+  };
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    const GridKey& g = keys[k];
+    const auto i = static_cast<std::int32_t>(first + k);
+    link(i, find({g.group, g.row, g.col - 1}), 0, 1);  // previous beam
+    std::int32_t prev = find({g.group, g.row - 1, g.col});
+    const auto last = last_row_.find(g.group);
+    if (prev < 0 && last != last_row_.end() && last->second.row == g.row - 1) {
+      const auto it = last->second.cols.find(g.col);
+      prev = it == last->second.cols.end() ? -1 : it->second;
+    }
+    link(i, prev, 2, 3);  // same beam, previous scan
+  }
+  for (std::size_t k = 0; k < keys.size(); ++k) {  // the newest row of each group
+    RowIndex& r = last_row_[keys[k].group];
+    if (keys[k].row > r.row || r.row == INT32_MIN) {
+      r.row = keys[k].row;
+      r.cols.clear();
+    }
+    if (keys[k].row == r.row) {
+      r.cols[keys[k].col] = static_cast<std::int32_t>(first + k);
     }
   }
   window_.emplace_back(first, points.size());
   while (window_.size() > static_cast<std::size_t>(online_.seed_window_scans)) {
     window_.pop_front();
   }
+}
+
+// Beyond the paper: a measurement just past the end of a surface (the robot
+// drives 8 cm between scans, more than the 7.2 cm outlier distance at
+// sigma 2 cm) continues the surface of an adjacent measurement when it lies
+// on that surface's plane (within 2.5 sigma), so walls grow with the robot
+// instead of being re-seeded piece by piece and fused afterwards.
+std::int32_t OnlineEm::continuation(std::size_t i) const {
+  for (const std::int32_t n : neighbours_[i]) {
+    if (n < 0) {
+      continue;
+    }
+    const std::int32_t j = best_[static_cast<std::size_t>(n)];
+    if (j >= 0 && std::abs(surfaces_[static_cast<std::size_t>(j)].rect.planeDistance(points_[i])) <=
+                      2.5 * model_.sigma()) {
+      return j;
+    }
+  }
+  return -1;
+}
+
+// Whether `basis` (a subsample spread over the surface) leaves most of the
+// rectangle empty, on cells sized for ~4 sampled points each.
+bool OnlineEm::poorCoverage(const std::vector<std::int32_t>& basis, const Rectangle& rect) const {
+  if (rect.area() < 4.0 || basis.size() < 32) {
+    return false;
+  }
+  const double cell = 2.0 * std::sqrt(rect.area() / static_cast<double>(basis.size()));
+  const double empty = emptyArea(points_, basis, rect, cell);
+  return empty > 0.5 * rect.area();
 }
 
 OnlineEm::Cause OnlineEm::evaluate(std::size_t i) const {
@@ -144,7 +164,10 @@ void OnlineEm::assign(std::size_t i, std::int32_t j) {
 // One E-step visit: re-derive the most likely cause; keep the point in the
 // revisit queue while it is unexplained or on a boundary and not frozen.
 void OnlineEm::revisit(std::size_t i, OnlineUpdate& u) {
-  const Cause c = evaluate(i);
+  Cause c = evaluate(i);
+  if (c.best < 0) {
+    c.best = continuation(i);
+  }
   if (c.best != best_[i]) {
     assign(i, c.best);
     ++u.reassigned;
@@ -199,10 +222,14 @@ void OnlineEm::maximize(std::int32_t j) {
   std::sort(basis.begin(), basis.end());
   basis.erase(std::unique(basis.begin(), basis.end()), basis.end());
   const std::vector<std::int32_t> coherent = coherentMembers(basis, neighbours_, best_, 2);
-  if (fitRectangle(points_, coherent, fitted) == FitStatus::kOk) {
+  std::vector<std::int32_t> hull;
+  if (fitRectangleWithHull(points_, coherent, fitted, hull) == FitStatus::kOk) {
     s.rect = fitted;
-    s.hull = hullOf(points_, coherent, fitted);
+    s.hull = std::move(hull);
     index_.update(j, s.rect);
+    // A rectangle its points cover poorly (a ceiling continued around a
+    // corner into an L) is cut at once, before it spreads further.
+    s.poorly_covered = poorCoverage(coherent, s.rect);
   }
   s.fresh.clear();
 }
@@ -248,29 +275,43 @@ OnlineUpdate OnlineEm::addScan(const std::vector<Eigen::Vector3d>& points,
   appendScan(points, keys);
   ++scans_;
   u.new_points = static_cast<int>(points.size());
-  // E-step over the bounded set: the new scan, then queued past points.
+  // E-step over the bounded set: the new scan, then queued past points (the
+  // oldest first; the new scan's doubtful points join the queue's end).
+  const std::size_t queued_before = queue_.size();
   for (std::size_t i = first; i < points_.size(); ++i) {
     revisit(i, u);
   }
-  for (int k = 0; k < online_.revisit_budget && !queue_.empty(); ++k) {
+  const std::size_t budget =
+      std::min(queued_before, static_cast<std::size_t>(online_.revisit_budget));
+  for (std::size_t k = 0; k < budget; ++k) {
     const auto i = static_cast<std::size_t>(queue_.front());
     queue_.pop_front();
     queued_[i] = 0;
-    if (i >= first) {
-      continue;  // a new point already visited in this scan
-    }
     ++visits_[i];
     ++u.revisited;
     revisit(i, u);
   }
   // Model selection, then the M-step of the active surfaces.
-  u.changes.added = seedNew();
+  if (scans_ % online_.seed_every_scans == 0) {
+    u.changes.added = seedNew();
+  }
   u.changes.removed = removeUnsupported();
-  selectRoundRobin(u.changes);
+  if ((scans_ + 1) % online_.select_every_scans == 0) {
+    selectRoundRobin(u.changes);
+  }
   for (std::size_t j = 0; j < surfaces_.size(); ++j) {
     if (surfaces_[j].alive && surfaces_[j].active) {
       maximize(static_cast<std::int32_t>(j));
       ++u.active_surfaces;
+    }
+  }
+  for (std::size_t j = 0; j < surfaces_.size(); ++j) {
+    if (surfaces_[j].alive && surfaces_[j].poorly_covered) {
+      surfaces_[j].poorly_covered = false;
+      if (trySplit(static_cast<std::int32_t>(j))) {
+        ++u.changes.split;
+      }
+      break;  // at most one per scan
     }
   }
   return u;

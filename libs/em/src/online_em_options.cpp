@@ -24,6 +24,9 @@ bool OnlineEmOptions::validate(std::string* why) const {
     return fail("seed_window_scans must be >= 2");
   if (selection_per_scan < 0)
     return fail("selection_per_scan must be >= 0");
+  if (seed_every_scans < 1 || select_every_scans < 1) {
+    return fail("seed_every_scans and select_every_scans must be >= 1");
+  }
   if (selection_sample_cap < 100)
     return fail("selection_sample_cap must be >= 100");
   if (removal_after_scans < 1)

@@ -42,8 +42,11 @@ int OnlineEm::seedNew() {
   for (const std::int32_t g : global) {
     local_of[g] = static_cast<std::int32_t>(pts.size());
     pts.push_back(points_[static_cast<std::size_t>(g)]);
-    const bool free =
-        best_[static_cast<std::size_t>(g)] < 0 && !not_planar_[static_cast<std::size_t>(g)];
+    // A point that stayed unexplained through kSeedTries seeding turns is not
+    // seeded again (clutter, or a patch too small): bounded work per scan.
+    const bool free = best_[static_cast<std::size_t>(g)] < 0 &&
+                      !not_planar_[static_cast<std::size_t>(g)] &&
+                      seed_tries_[static_cast<std::size_t>(g)] < kSeedTries;
     outlier.push_back(free ? 1.0 : 0.0);
   }
   if (std::count(outlier.begin(), outlier.end(), 1.0) < options_.min_support) {
@@ -79,7 +82,12 @@ int OnlineEm::seedNew() {
   };
   PlanarEmOptions seeding = options_;
   seeding.max_new_per_round = 2;
-  const SeedResult s = seedSurfaces(pts, nb, outlier, model_, seeding, accept, rng_);
+  const SeedResult s = seedSurfaces(pts, nb, outlier, model_, seeding, accept, rng_, kSeedAttempts);
+  for (std::size_t k = 0; k < global.size(); ++k) {
+    if (outlier[k] > 0.0) {
+      ++seed_tries_[static_cast<std::size_t>(global[k])];
+    }
+  }
   int added = 0;
   for (std::size_t k = 0; k < s.surfaces.size(); ++k) {
     const std::vector<std::int32_t> members = to_global(s.members[k]);
@@ -136,12 +144,14 @@ void OnlineEm::selectRoundRobin(SelectionChanges& c) {
     if (!surfaces_[cursor_].alive) {
       return;
     }
+    // Fusion and split tests take turns, so that one scan pays for one of them.
     const auto j = static_cast<std::int32_t>(cursor_);
-    if (tryFuse(j)) {
-      ++c.fused;
-    } else if (trySplit(j)) {
-      ++c.split;
+    if (fuse_turn_) {
+      c.fused += tryFuse(j) ? 1 : 0;
+    } else {
+      c.split += trySplit(j) ? 1 : 0;
     }
+    fuse_turn_ = !fuse_turn_;
   }
 }
 

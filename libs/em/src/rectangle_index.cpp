@@ -49,6 +49,16 @@ Eigen::Vector3i RectangleIndex::cellOf(const Eigen::Vector3d& p) const {
   return (p / cell_).array().floor().cast<int>();
 }
 
+const std::vector<std::int32_t>* RectangleIndex::candidatesRef(
+    const Eigen::Vector3d& p, std::vector<std::int32_t>& scratch) const {
+  if (!global_.empty()) {
+    candidates(p, scratch);
+    return &scratch;
+  }
+  const auto it = cells_.find(key(cellOf(p)));
+  return it == cells_.end() ? nullptr : &it->second;
+}
+
 void RectangleIndex::candidates(const Eigen::Vector3d& p, std::vector<std::int32_t>& out) const {
   out.clear();
   const auto it = cells_.find(key(cellOf(p)));

@@ -42,13 +42,14 @@ void computeResponsibilities(const std::vector<Eigen::Vector3d>& points,
   std::vector<ChunkOut> chunks(chunkCount(n));
   forEachChunk(n, threads, [&](std::size_t c, std::size_t begin, std::size_t end) {
     ChunkOut& co = chunks[c];
-    std::vector<std::int32_t> cand;
+    std::vector<std::int32_t> scratch;
     for (std::size_t i = begin; i < end; ++i) {
-      index.candidates(points[i], cand);
+      const std::vector<std::int32_t>* cand = index.candidatesRef(points[i], scratch);
       std::uint32_t count = 0;
       double l = s_star;
       double best = s_star;
-      for (const std::int32_t j : cand) {
+      static const std::vector<std::int32_t> kNone;
+      for (const std::int32_t j : cand != nullptr ? *cand : kNone) {
         const double s = model.surfaceScore(surfaces[j].rect.squaredDistance(points[i]));
         if (s < min_score) {
           continue;

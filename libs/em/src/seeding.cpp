@@ -64,8 +64,15 @@ std::vector<std::int32_t> growRegion(const std::vector<Eigen::Vector3d>& points,
       queue.push_back(q);
     }
     if (region.size() >= next_refit) {
+      // The plane alone (eqs. 24-27, unit weights): the rectangle is fitted
+      // once the region is complete.
+      PlaneMoments m;
+      m.reference = points[static_cast<std::size_t>(region.front())];
+      for (const std::int32_t i : region) {
+        m.add(points[static_cast<std::size_t>(i)], 1.0);
+      }
       Rectangle refit = plane;
-      if (fitSurface(points, region, refit) == FitStatus::kOk) {
+      if (planeFromMoments(m, plane.normal, refit) == FitStatus::kOk) {
         plane = refit;
       }
       next_refit *= 2;
@@ -80,7 +87,7 @@ std::vector<std::int32_t> growRegion(const std::vector<Eigen::Vector3d>& points,
 SeedResult seedSurfaces(const std::vector<Eigen::Vector3d>& points, const Neighbours& neighbours,
                         const std::vector<double>& outlier, const MeasurementModel& model,
                         const PlanarEmOptions& options, const SurfaceCheck& accept,
-                        std::mt19937_64& rng) {
+                        std::mt19937_64& rng, std::size_t max_attempts) {
   std::vector<char> free(points.size(), 0);
   for (std::size_t i = 0; i < points.size(); ++i) {
     free[i] = outlier[i] > options.seed_outlier_probability ? 1 : 0;
@@ -89,7 +96,9 @@ SeedResult seedSurfaces(const std::vector<Eigen::Vector3d>& points, const Neighb
   SeedResult result;
   result.candidates = triples.size();
   std::shuffle(triples.begin(), triples.end(), rng);
-  const std::size_t max_attempts = 20 * static_cast<std::size_t>(options.max_new_per_round);
+  if (max_attempts == 0) {
+    max_attempts = 20 * static_cast<std::size_t>(options.max_new_per_round);
+  }
   const double grow_distance = 2.5 * model.sigma();
   for (const Triple& t : triples) {
     if (result.surfaces.size() >= static_cast<std::size_t>(options.max_new_per_round) ||

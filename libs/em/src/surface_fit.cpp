@@ -67,6 +67,35 @@ FitStatus fitRectangle(const std::vector<Eigen::Vector3d>& points,
   return FitStatus::kOk;
 }
 
+FitStatus fitRectangleWithHull(const std::vector<Eigen::Vector3d>& points,
+                               const std::vector<std::int32_t>& members, Rectangle& rect,
+                               std::vector<std::int32_t>& hull) {
+  hull.clear();
+  if (members.size() < 3) {
+    return FitStatus::kTooFewPoints;
+  }
+  const Eigen::Vector3d u = rect.axis_u;
+  const Eigen::Vector3d v = rect.axisV();
+  std::vector<Eigen::Vector2d> uv;
+  uv.reserve(members.size());
+  for (const std::int32_t i : members) {
+    const Eigen::Vector3d d = points[static_cast<std::size_t>(i)] - rect.centre;
+    uv.emplace_back(u.dot(d), v.dot(d));
+  }
+  std::vector<Eigen::Vector2d> hull_uv;
+  for (const std::size_t k : convexHullIndices(uv)) {
+    hull.push_back(members[k]);
+    hull_uv.push_back(uv[k]);
+  }
+  const Rect2D r = minAreaRectangle(hull_uv.size() >= 3 ? hull_uv : uv);
+  rect.centre += u * r.centre.x() + v * r.centre.y();
+  rect.axis_u = (u * r.axis.x() + v * r.axis.y()).normalized();
+  rect.half_u = r.half_a;
+  rect.half_v = r.half_b;
+  rect.reproject();
+  return FitStatus::kOk;
+}
+
 FitStatus fitSurface(const std::vector<Eigen::Vector3d>& points,
                      const std::vector<std::int32_t>& members, Rectangle& rect) {
   if (members.size() < 3) {

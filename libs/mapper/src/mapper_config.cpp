@@ -96,6 +96,8 @@ void OnlineEmSection::load(config::SectionReader& r) {
   r.read("selection_per_scan", online.selection_per_scan);
   r.read("selection_sample_cap", online.selection_sample_cap);
   r.read("removal_after_scans", online.removal_after_scans);
+  r.read("seed_every_scans", online.seed_every_scans);
+  r.read("select_every_scans", online.select_every_scans);
 }
 
 bool PlanarEmSection::validate(std::string* why) const {

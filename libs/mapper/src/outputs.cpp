@@ -1,6 +1,8 @@
 #include "pmap/mapper/outputs.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "pmap/common/atomic_file.h"
@@ -54,6 +56,51 @@ json historyJson(const em::EmResult& em) {
 }
 
 // Keys of the planar map (doc/outputs.md).
+// p50 / p99 / max of a list of timings (nearest-rank percentiles).
+json percentiles(std::vector<double> v) {
+  if (v.empty()) {
+    return {{"p50", nullptr}, {"p99", nullptr}, {"max", nullptr}};
+  }
+  std::sort(v.begin(), v.end());
+  auto rank = [&](double q) {
+    const auto k = static_cast<std::size_t>(std::ceil(q * static_cast<double>(v.size())));
+    return v[std::min(v.size() - 1, k == 0 ? 0 : k - 1)];
+  };
+  return {{"p50", rank(0.5)}, {"p99", rank(0.99)}, {"max", v.back()}};
+}
+
+// Online-mode keys: per-scan EM and pose timings (doc/outputs.md).
+void addOnline(const MappingResult& r, json& s) {
+  std::vector<double> em_ms;
+  for (const OnlineRecord& rec : r.online) {
+    em_ms.push_back(rec.em_ms);
+  }
+  s["em_per_scan_ms"] = percentiles(em_ms);
+  json deciles = json::array();
+  for (int d = 0; d < 10 && !em_ms.empty(); ++d) {
+    const std::size_t a = em_ms.size() * static_cast<std::size_t>(d) / 10;
+    const std::size_t b = em_ms.size() * static_cast<std::size_t>(d + 1) / 10;
+    std::vector<double> part(em_ms.begin() + static_cast<std::ptrdiff_t>(a),
+                             em_ms.begin() + static_cast<std::ptrdiff_t>(std::max(a + 1, b)));
+    deciles.push_back(percentiles(part)["p50"]);
+  }
+  s["em_per_scan_ms_by_decile"] = deciles;
+}
+
+void writeOnlineCsv(const fs::path& path, const MappingResult& r) {
+  writeFileAtomically(path, [&](std::ostream& out) {
+    out << "scan,em_ms,surfaces,points,new_points,revisited,reassigned,active,added,removed,"
+           "fused,split\n";
+    for (const OnlineRecord& rec : r.online) {
+      const em::OnlineUpdate& u = rec.update;
+      out << rec.scan << "," << rec.em_ms << "," << rec.surfaces << "," << rec.points << ","
+          << u.new_points << "," << u.revisited << "," << u.reassigned << "," << u.active_surfaces
+          << "," << u.changes.added << "," << u.changes.removed << "," << u.changes.fused << ","
+          << u.changes.split << "\n";
+    }
+  });
+}
+
 void addPlanarMap(const MappingResult& r, json& s) {
   const em::EmResult& em = *r.em;
   const std::size_t map_triangles = 2 * em.map.surfaces.size() + em.map.fine_triangles.size();
@@ -69,6 +116,9 @@ void addPlanarMap(const MappingResult& r, json& s) {
   s["em_message"] = em.message;
   s["ms_per_iteration"] = em.iterations > 0 ? 1000.0 * r.timing.em_s / em.iterations : 0.0;
   s["history"] = historyJson(em);
+  if (!r.online.empty()) {
+    addOnline(r, s);
+  }
 }
 
 json summaryJson(const MapperArgs& args, const MappingResult& r, double write_s, double total_s) {
@@ -92,7 +142,8 @@ json summaryJson(const MapperArgs& args, const MappingResult& r, double write_s,
   s["duration_s"] = r.duration();
   s["timing_s"] = {{"total", total_s},      {"read", r.timing.read_s}, {"pose", r.timing.pose_s},
                    {"map", r.timing.map_s}, {"em", r.timing.em_s},     {"write", write_s}};
-  s["mode"] = args.poses_only ? "poses-only" : args.mode;
+  s["mode"] = r.em_mode.empty() ? args.mode : r.em_mode;
+  s["pose_per_scan_ms"] = percentiles(r.pose_step_ms);
   if (r.em) {
     addPlanarMap(r, s);
   }
@@ -131,6 +182,9 @@ void writeOutputs(const MapperConfig& config, const MapperArgs& args, const Mapp
                              r.em ? products::surfaceIdsOfPoints(r.em->map) : std::vector<int>{});
     if (config.output.raw_map) {
       writeRawMap(args.out / "raw.wrl", r);
+    }
+    if (!r.online.empty()) {
+      writeOnlineCsv(args.out / "online.csv", r);
     }
     if (r.em) {
       products::writeSurfacesCsv(args.out / "surfaces.csv", r.em->map.surfaces);

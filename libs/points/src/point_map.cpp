@@ -24,7 +24,6 @@ std::size_t PointMap::addScan(const input::StructureScan& scan,
   record.cols = scan.cols;
   record.organised = scan.organised;
 
-  xyz_.reserve(xyz_.size() + scan.points.size());
   for (size_t i = 0; i < scan.points.size(); ++i) {
     xyz_.push_back(rot * scan.points[i] + trans);
     scan_.push_back(static_cast<std::int32_t>(scan.index));

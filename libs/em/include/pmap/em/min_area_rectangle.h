@@ -23,6 +23,10 @@ struct Rect2D {
 /// chain). Fewer than 3 distinct points give those points.
 std::vector<Eigen::Vector2d> convexHull(std::vector<Eigen::Vector2d> points);
 
+/// Indices of the convex hull vertices of `points`, counter-clockwise (the
+/// same hull as convexHull; duplicates give their first index).
+std::vector<std::size_t> convexHullIndices(const std::vector<Eigen::Vector2d>& points);
+
 /// Exact minimum-area enclosing rectangle (rotating calipers on the hull).
 /// Empty input: a zero rectangle at the origin. Degenerate (collinear or
 /// coincident) input: a zero-width rectangle along the points.

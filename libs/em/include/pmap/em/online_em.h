@@ -19,6 +19,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <climits>
 #include <cstdint>
 #include <deque>
 #include <random>
@@ -72,6 +73,7 @@ class OnlineEm {
     bool alive = true;
     bool active = false;
     bool trimmed = false;
+    bool poorly_covered = false;  ///< the last M-step left most of the rectangle empty
   };
   struct Cause {
     std::int32_t best = -1;
@@ -82,6 +84,8 @@ class OnlineEm {
   // Bookkeeping (online_em.cpp).
   void appendScan(const std::vector<Eigen::Vector3d>& points, const std::vector<GridKey>& keys);
   Cause evaluate(std::size_t i) const;
+  std::int32_t continuation(std::size_t i) const;
+  bool poorCoverage(const std::vector<std::int32_t>& basis, const Rectangle& rect) const;
   void assign(std::size_t i, std::int32_t surface);
   void revisit(std::size_t i, OnlineUpdate& u);
   void maximize(std::int32_t j);
@@ -108,18 +112,26 @@ class OnlineEm {
   std::vector<Eigen::Vector3d> points_;
   std::vector<std::int32_t> rows_;
   Neighbours neighbours_;
-  std::unordered_map<GridKey, std::int32_t, GridKeyHash> index_of_key_;
+  struct RowIndex {
+    std::int32_t row = INT32_MIN;
+    std::unordered_map<std::int32_t, std::int32_t> cols;  ///< col -> point
+  };
+  std::unordered_map<std::int32_t, RowIndex> last_row_;  ///< per group: its newest row
   std::vector<std::int32_t> best_;
   std::vector<std::int32_t> member_pos_;  ///< position in its surface's member list
   std::vector<std::uint8_t> visits_;
   std::vector<char> queued_;
   std::vector<char> not_planar_;
+  std::vector<std::uint8_t> seed_tries_;  ///< seeding turns a point stayed unexplained
+  static constexpr std::uint8_t kSeedTries = 4;
+  static constexpr std::size_t kSeedAttempts = 6;  ///< regions grown per seeding turn
   std::deque<std::int32_t> queue_;
   std::deque<std::pair<std::size_t, std::size_t>> window_;  ///< recent scans: first, count
 
   std::vector<OnlineSurface> surfaces_;
   std::int32_t next_id_ = 0;
   std::size_t cursor_ = 0;  ///< round robin over surfaces
+  bool fuse_turn_ = true;   ///< selection turns alternate fusion and split tests
   int scans_ = 0;
 };
 

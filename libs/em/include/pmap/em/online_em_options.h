@@ -20,10 +20,15 @@ struct OnlineEmOptions {
   int sample_cap = 400;
   /// Scans whose unexplained measurements may seed and grow a new surface, >= 2.
   int seed_window_scans = 12;
-  /// Surfaces examined per scan for fusion and splits (round robin), >= 0.
+  /// Surfaces examined for fusion and splits per selection turn (round
+  /// robin), >= 0.
   int selection_per_scan = 1;
+  /// Seeding runs every this many scans, selection turns on the scans in
+  /// between (so their costs do not add up in one scan), >= 1.
+  int seed_every_scans = 2;
+  int select_every_scans = 2;
   /// Points a split / fusion test looks at, at most (a seeded subsample), >= 100.
-  int selection_sample_cap = 3000;
+  int selection_sample_cap = 1500;
   /// Scans after which a surface without min_support points is removed, >= 1.
   int removal_after_scans = 25;
 

@@ -25,6 +25,11 @@ class RectangleIndex {
   /// misses one within the inflation distance). Ascending.
   void candidates(const Eigen::Vector3d& p, std::vector<std::int32_t>& out) const;
 
+  /// The same list without a copy when no surface is global (null: none);
+  /// falls back to filling `scratch` otherwise.
+  const std::vector<std::int32_t>* candidatesRef(const Eigen::Vector3d& p,
+                                                 std::vector<std::int32_t>& scratch) const;
+
  private:
   std::int64_t key(const Eigen::Vector3i& c) const;
   Eigen::Vector3i cellOf(const Eigen::Vector3d& p) const;

@@ -35,6 +35,6 @@ using SurfaceCheck = std::function<bool(const std::vector<std::int32_t>&, Rectan
 SeedResult seedSurfaces(const std::vector<Eigen::Vector3d>& points, const Neighbours& neighbours,
                         const std::vector<double>& outlier, const MeasurementModel& model,
                         const PlanarEmOptions& options, const SurfaceCheck& accept,
-                        std::mt19937_64& rng);
+                        std::mt19937_64& rng, std::size_t max_attempts = 0);
 
 }  // namespace pmap::em

@@ -40,6 +40,12 @@ FitStatus planeFromMoments(const PlaneMoments& m, const Eigen::Vector3d& previou
 FitStatus fitRectangle(const std::vector<Eigen::Vector3d>& points,
                        const std::vector<std::int32_t>& members, Rectangle& rect);
 
+/// fitRectangle that also returns the members on the rectangle's hull (a
+/// small set that, kept, preserves the extent when the members are subsampled).
+FitStatus fitRectangleWithHull(const std::vector<Eigen::Vector3d>& points,
+                               const std::vector<std::int32_t>& members, Rectangle& rect,
+                               std::vector<std::int32_t>& hull);
+
 /// Plane and rectangle of a set of points with unit weights.
 FitStatus fitSurface(const std::vector<Eigen::Vector3d>& points,
                      const std::vector<std::int32_t>& members, Rectangle& rect);
