@@ -115,11 +115,11 @@ class RawlogRun {
     }
   }
 
+  // Steps that carry a pose-laser scan: their pose-stage time is the "pose
+  // per scan" time (ICP and pose handling) of summary.json.
   static bool carriesPoses(const input::InputStep& step) {
-    return step.action != nullptr || std::any_of(step.observations.begin(), step.observations.end(),
-                                                 [](const input::ObservationItem& o) {
-                                                   return o.roles.pose_laser || o.roles.odometry;
-                                                 });
+    return std::any_of(step.observations.begin(), step.observations.end(),
+                       [](const input::ObservationItem& o) { return o.roles.pose_laser; });
   }
 
   void onPlaced(const input::StructureScan& scan, std::size_t record) {
