@@ -135,6 +135,8 @@ int ModelSelector::removeSurfaces(std::vector<Surface>& surfaces, Responsibiliti
     for (std::size_t j = 0; j < J; ++j) {
       if (!drop[j]) {
         kept.push_back(surfaces[j]);
+      } else {
+        tabu_.push_back({round_, surfaces[j].rect});
       }
     }
     const int n = static_cast<int>(J - kept.size());
@@ -397,7 +399,8 @@ int ModelSelector::splitSurfaces(std::vector<Surface>& surfaces, Responsibilitie
                               settled, options_.responsibility_tolerance,
                               options_.selection_scoring) -
           options_.kappa * static_cast<double>(settled.size() - 1) + old_empty - empty;
-      if (gain > best_gain) {
+      if (gain > best_gain && std::none_of(settled.begin(), settled.end(),
+                                           [this](const Rectangle& r) { return isTabu(r); })) {
         best_gain = gain;
         best = settled;
       }
@@ -440,7 +443,7 @@ int ModelSelector::seed(std::vector<Surface>& surfaces, const Responsibilities& 
         logLikelihoodChange(points_, resp, model_, pointsNear(grid_, points_, r, cutoff_), {}, {r},
                             options_.responsibility_tolerance, options_.selection_scoring) -
         options_.kappa - emptyCost(s.members[k], r);
-    if (gain > options_.min_gain) {
+    if (gain > options_.min_gain && !isTabu(r)) {
       surfaces.push_back({r, next_id++, static_cast<std::int32_t>(s.members[k].size())});
       ++added;
     }
@@ -454,7 +457,25 @@ int ModelSelector::prune(std::vector<Surface>& surfaces) {
   return removeSurfaces(surfaces, resp);
 }
 
+// Tabu (against model-selection cycles): a surface removed in one of the
+// last kTabuRounds rounds may not be created again by a split or a seed; a
+// split that the next round's removal undoes would otherwise repeat forever.
+bool ModelSelector::isTabu(const Rectangle& r) const {
+  for (const auto& [when, t] : tabu_) {
+    if (std::abs(r.normal.dot(t.normal)) > std::cos(5.0 * M_PI / 180.0) &&
+        std::abs(t.planeDistance(r.centre)) < 2.0 * model_.sigma() &&
+        (r.centre - t.centre).norm() < 0.1 + 0.25 * std::sqrt(t.area())) {
+      return true;
+    }
+  }
+  return false;
+}
+
 SelectionChanges ModelSelector::round(std::vector<Surface>& surfaces, std::int32_t& next_id) {
+  ++round_;
+  while (!tabu_.empty() && tabu_.front().first < round_ - kTabuRounds) {
+    tabu_.pop_front();
+  }
   SelectionChanges c;
   Responsibilities resp;
   expect(surfaces, resp);

@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <deque>
 #include <optional>
 #include <random>
 #include <vector>
@@ -82,6 +83,11 @@ class ModelSelector {
   MeasurementModel model_;
   double cutoff_;
   PointGrid grid_;
+  bool isTabu(const Rectangle& r) const;
+
+  static constexpr int kTabuRounds = 3;
+  int round_ = 0;
+  std::deque<std::pair<int, Rectangle>> tabu_;  ///< (round, rectangle) of recent removals
   /// Points of surfaces removed as curved (a bin): not seeded again.
   std::vector<char> not_planar_;
   std::mt19937_64 rng_;
