@@ -6,12 +6,10 @@
 # on one thread.   Usage: scripts/offline-em-report.sh [BUILD_DIR] [RUNS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/report-lib.sh
 bin="${1:-build}/bin"
 runs="${2:-5}"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 
-json() { python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print($2)" "$1"; }
 
 "$bin/indoor-sim" --seed 1 --no-cameras --quiet --out "$work/s2"
 "$bin/indoor-sim" --seed 1 --sigma 0.05 --no-cameras --quiet --out "$work/s5"

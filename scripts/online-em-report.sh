@@ -6,12 +6,9 @@
 # Usage: scripts/online-em-report.sh [BUILD_DIR] [RUNS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/report-lib.sh
 bin="${1:-build}/bin"
 runs="${2:-3}"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-json() { python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print($2)" "$1"; }
-median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
 
 "$bin/indoor-sim" --seed 1 --no-cameras --quiet --out "$work/s2" 2>/dev/null
 "$bin/indoor-sim" --world config/worlds/long.json --seed 1 --no-cameras --quiet \

@@ -50,5 +50,10 @@ TEST(Text, SplitFieldsDropsEmptyFields) {
   EXPECT_EQ(f[2], "3");
 }
 
+TEST(EscapeHtml, EscapesMarkup) {
+  EXPECT_EQ(escapeHtml("a<b>&\"c'"), "a&lt;b&gt;&amp;&quot;c&#39;");
+  EXPECT_EQ(escapeHtml(""), "");
+}
+
 }  // namespace
 }  // namespace pmap

@@ -21,6 +21,15 @@ GroundTruthRecorder recorder() {
   gt.addPose(100.0, Pose2D{1.0, 0.1, 0.0});  // duplicate timestamp kept once
   gt.addPose(100.1, Pose2D{1.04, 0.1, 0.01});
   gt.addStructureScan(100.1, "LASER_V", {3, 4, -1});
+  ImageRecord image;
+  image.file = "CAMERA_LEFT_000000.jpg";
+  image.label = "CAMERA_LEFT";
+  image.timestamp_s = 100.05;
+  image.effects.exposure.gain = 1.1;
+  image.effects.blur_sigma_px = 1.7;
+  image.effects.blurred = true;
+  image.quality.sharpness = 0.2;
+  gt.addImage(image);
   return gt;
 }
 
@@ -34,7 +43,7 @@ TEST(GroundTruth, JsonHasTheDocumentedSchema) {
   const OrderedJson doc = recorder().toJson(w, meta);
   for (const char* key :
        {"format", "world", "seed", "sigma_m", "frame", "start_time", "sensors", "pose_fields",
-        "poses", "surfaces", "posters", "clutter", "structure_scans"}) {
+        "poses", "surfaces", "posters", "clutter", "structure_scans", "images"}) {
     EXPECT_TRUE(doc.contains(key)) << key;
   }
   EXPECT_EQ(doc["format"], "pmap-gt/1");
@@ -54,6 +63,24 @@ TEST(GroundTruth, JsonHasTheDocumentedSchema) {
   EXPECT_EQ(doc["sensors"]["pose_laser"]["label"], "LASER_H");
   EXPECT_EQ(doc["sensors"]["cameras"].size(), 2u);
   EXPECT_EQ(doc["clutter"][0]["shape"], "cylinder");
+  const auto& image = doc["images"][0];
+  for (const char* key : {"file", "image", "timestamp", "label", "index", "gain", "offset_dn",
+                          "gamma", "blur_sigma_px", "motion_blur_px", "blurred", "sharpness",
+                          "laplacian_var", "saturated_fraction"}) {
+    EXPECT_TRUE(image.contains(key)) << key;
+  }
+  EXPECT_EQ(image["file"], "CAMERA_LEFT_000000.jpg");
+  EXPECT_EQ(image["image"], "run_Images/CAMERA_LEFT_000000.jpg");
+  EXPECT_EQ(image["gain"], 1.1);
+  EXPECT_EQ(image["blur_sigma_px"], 1.7);
+  const auto& cam = doc["sensors"]["cameras"][0];
+  EXPECT_EQ(cam["distortion"].size(), 5u);
+  EXPECT_EQ(cam["vignetting"], 0.25);
+  const auto& imaging = doc["config"]["cameras"];
+  EXPECT_EQ(imaging["exposure"]["gain"][1], 1.2);
+  EXPECT_EQ(imaging["blur"]["blurred_fraction"], 0.3);
+  EXPECT_TRUE(imaging["noise"].contains("full_well_e"));
+  EXPECT_FALSE(doc["config"]["noise"].contains("image_sigma"));
 }
 
 TEST(GroundTruth, BoxClutterHasItsSizeAndYaw) {

@@ -66,6 +66,8 @@ TEST(ObservationFactory, ImageIsExternallyStored) {
   EXPECT_NEAR(obs->cameraParams.fx(), 320.0, 1e-9);
   EXPECT_NEAR(obs->cameraParams.cx(), 319.5, 1e-12);
   EXPECT_NEAR(obs->cameraPose.roll(), -M_PI / 2, 1e-12);
+  EXPECT_EQ(obs->cameraParams.distortion, mrpt::img::DistortionModel::none);
+  EXPECT_EQ(obs->cameraParams.k1(), 0.0);
 }
 
 }  // namespace

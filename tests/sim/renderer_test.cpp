@@ -73,19 +73,27 @@ TEST(Renderer, BackgroundWhereNothingIsHit) {
   EXPECT_EQ(img.at<cv::Vec3f>(24, 32), cv::Vec3f(20.0f, 20.0f, 20.0f));
 }
 
-TEST(Renderer, FinishImageIsDeterministicAndNoisy) {
-  const cv::Mat flat(48, 64, CV_32FC3, cv::Scalar(100, 100, 100));
-  const cv::Mat a = finishImage(flat, 2.0, 5);
-  const cv::Mat b = finishImage(flat, 2.0, 5);
-  ASSERT_EQ(a.type(), CV_8UC3);
-  EXPECT_EQ(cv::norm(a, b, cv::NORM_INF), 0.0);
-  cv::Scalar mean, stddev;
-  cv::meanStdDev(a.reshape(1), mean, stddev);
-  EXPECT_NEAR(mean[0], 100.0, 0.5);
-  EXPECT_NEAR(stddev[0], 2.0, 0.3);
-  EXPECT_EQ(cv::norm(finishImage(flat, 0.0, 5), cv::Mat(48, 64, CV_8UC3, cv::Scalar::all(100)),
-                     cv::NORM_INF),
-            0.0);
+/// Poster pixels integrate the pixel's area: across a sharp black/white edge
+/// the boundary pixel gets an intermediate value (no point-sampled staircase).
+TEST(Renderer, PosterPixelsAreAreaAverages) {
+  World w = scene();
+  w.clutter.clear();
+  cv::Mat half(40, 50, CV_8UC3, cv::Scalar::all(0));
+  half.colRange(25, 50).setTo(cv::Scalar::all(255));  // white right half
+  const std::vector<cv::Mat> posters = {half};
+  const Renderer renderer(w, posters, 1);
+  // fx = 32 px at 2 m: 16 px/m. Shift the camera (image +x = world -y) so that
+  // the edge (poster u = 0.5 m, world y = 0) falls at u = 32.25: a quarter of
+  // pixel 32 is white. Point sampling at the pixel centre would see black.
+  RigidTransform cam = forwardCamera();
+  cam.translation.y() = (32.25 - kK.cx) / kK.fx * 2.0;
+  const cv::Mat img = renderer.render(kK, cam);
+  const float left = img.at<cv::Vec3f>(24, 28)[1];
+  const float edge = img.at<cv::Vec3f>(24, 32)[1];
+  const float right = img.at<cv::Vec3f>(24, 36)[1];
+  EXPECT_LT(left, 5.0f);
+  EXPECT_GT(right, 200.0f);
+  EXPECT_NEAR(edge, 0.25f * right, 0.08f * right);
 }
 
 }  // namespace

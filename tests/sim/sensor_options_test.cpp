@@ -19,6 +19,8 @@ TEST(SensorOptions, DefaultsAreValidAndThePapersRobot) {
   EXPECT_EQ(s.cameras.mounts[1].look, "right");
   EXPECT_EQ(s.start_time_s, 1767225600.0);
   EXPECT_TRUE(NoiseOptions().validate(&why)) << why;
+  EXPECT_FALSE(s.cameras.lens.hasDistortion());
+  EXPECT_EQ(s.cameras.exposure.gain[1], 1.2);
 }
 
 TEST(SensorOptions, ValidateNamesTheViolatedRule) {
@@ -34,6 +36,10 @@ TEST(SensorOptions, ValidateNamesTheViolatedRule) {
   s = SensorOptions();
   s.cameras.mounts[0].look = "up";
   EXPECT_FALSE(s.validate(&why));
+  s = SensorOptions();
+  s.cameras.exposure.gain = {1.3, 1.1};
+  EXPECT_FALSE(s.validate(&why));
+  EXPECT_NE(why.find("cameras: exposure.gain"), std::string::npos) << why;
   NoiseOptions n;
   n.range_sigma_m = -1.0;
   EXPECT_FALSE(n.validate(&why));

@@ -10,6 +10,7 @@
 #include <mrpt/poses/CPose3D.h>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "sim_test_support.h"
 
@@ -121,6 +122,8 @@ TEST(Simulator, SameSeedGivesIdenticalBytes) {
     EXPECT_EQ(test::readBytes(a / f), test::readBytes(b / f)) << f;
   }
   EXPECT_NE(test::readBytes(a / "run.rawlog"), test::readBytes(c / "run.rawlog"));
+  EXPECT_NE(test::readBytes(a / "run_Images/CAMERA_LEFT_000002.jpg"),
+            test::readBytes(c / "run_Images/CAMERA_LEFT_000002.jpg"));
 }
 
 TEST(Simulator, GroundTruthMatchesTheRawlog) {
@@ -236,6 +239,42 @@ TEST(Simulator, ImagesAreExternalFilesMrptCanLoad) {
   }
   EXPECT_EQ(checked, s.images);
   mrpt::img::CImage::setImagesPathBase(".");
+}
+
+/// gt.json lists every image of the rawlog, in file order, with its
+/// exposure, blur and sharpness; the gains lie in the configured range.
+TEST(Simulator, GroundTruthRecordsEveryImage) {
+  const auto dir = test::freshDir("sim_gt_images");
+  const SimulationSummary s = simulate(dir, RawlogFormat::kObservations, 5, 6.0);
+  std::ifstream in(dir / "run.gt.json");
+  const nlohmann::json gt = nlohmann::json::parse(in);
+  std::vector<std::pair<std::string, double>> logged;
+  for (const auto& obj : test::readRawlog(dir / "run.rawlog")) {
+    if (const auto img = std::dynamic_pointer_cast<mrpt::obs::CObservationImage>(obj)) {
+      logged.emplace_back(img->image.getExternalStorageFile(),
+                          mrpt::Clock::toDouble(img->timestamp));
+    }
+  }
+  const auto& images = gt["images"];
+  ASSERT_EQ(images.size(), s.images);
+  ASSERT_EQ(images.size(), logged.size());
+  const auto& range = gt["config"]["cameras"]["exposure"]["gain"];
+  std::set<double> gains;
+  for (std::size_t i = 0; i < images.size(); ++i) {
+    const auto& im = images[i];
+    EXPECT_EQ(im["file"], logged[i].first);
+    EXPECT_EQ(im["timestamp"].get<double>(), logged[i].second);
+    EXPECT_EQ(im["image"], "run_Images/" + logged[i].first);
+    EXPECT_TRUE(fs::exists(dir / im["image"].get<std::string>()));
+    EXPECT_EQ(im["file"].get<std::string>().rfind(im["label"].get<std::string>(), 0), 0u);
+    EXPECT_GE(im["gain"].get<double>(), range[0].get<double>());
+    EXPECT_LE(im["gain"].get<double>(), range[1].get<double>());
+    EXPECT_GT(im["sharpness"].get<double>(), 0.0);
+    EXPECT_LE(im["sharpness"].get<double>(), 1.0 + 1e-9);
+    EXPECT_GT(im["laplacian_var"].get<double>(), 0.0);
+    gains.insert(im["gain"].get<double>());
+  }
+  EXPECT_EQ(gains.size(), images.size());  // drawn per frame
 }
 
 TEST(Simulator, NoCamerasAndDurationCut) {

@@ -41,5 +41,39 @@ TEST(StrictJson, TypeAndRangeErrors) {
   EXPECT_THROW(r.point3("n"), ConfigError);
 }
 
+TEST(StrictJson, IntervalsAndQuintuples) {
+  const nlohmann::json j = parseStrictJson(
+      R"({"ok": [0.5, 1.5], "rev": [2, 1], "out": [0, 20], "q": [1, 2, 3, 4, 5], "q4": [1, 2, 3, 4]})",
+      "f.json");
+  JsonReader r(j, "f.json", "cam");
+  EXPECT_EQ(r.interval("ok", {0, 0}, closed(0, 10)), (std::array<double, 2>{0.5, 1.5}));
+  EXPECT_EQ(r.interval("absent", {3, 4}, closed(0, 10)), (std::array<double, 2>{3, 4}));
+  EXPECT_EQ(r.quintuple("q", {}, closed(0, 10))[4], 5.0);
+  auto message = [&](auto&& read) {
+    try {
+      read();
+    } catch (const ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(message([&] {
+              r.interval("rev", {0, 0}, closed(0, 10));
+            }).find("cam.rev: [2, 1]: the lower bound exceeds the upper bound"),
+            std::string::npos);
+  EXPECT_NE(message([&] {
+              r.interval("out", {0, 0}, closed(0, 10));
+            }).find("cam.out: 20 is out of range [0, 10]"),
+            std::string::npos);
+  EXPECT_NE(message([&] {
+              r.quintuple("q", {}, closed(0, 4));
+            }).find("cam.q: element 4: 5 is out of range [0, 4]"),
+            std::string::npos);
+  EXPECT_NE(message([&] {
+              r.quintuple("q4", {}, closed(0, 10));
+            }).find("cam.q4: expected an array of 5 numbers"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace pmap::sim::detail

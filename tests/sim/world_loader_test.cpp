@@ -94,6 +94,72 @@ TEST(WorldLoader, OutOfRangeAndMissingValuesAreErrors) {
             std::string::npos);
 }
 
+/// A valid world with `cameras` as its sensors.cameras block.
+std::string camerasWith(const std::string& cameras) {
+  return R"({"name": "t", "path": {"waypoints": [[1, 0], [2, 0]]}, "sensors": {"cameras": )" +
+         cameras + "}}";
+}
+
+TEST(WorldLoader, CameraImagingDefaultsAndOverrides) {
+  const WorldSpec d = parseWorldText(camerasWith("{}"), "w.json");
+  EXPECT_EQ(d.sensors.cameras.exposure.gain[0], 0.8);
+  EXPECT_EQ(d.sensors.cameras.blur.blurred_fraction, 0.3);
+  EXPECT_EQ(d.sensors.cameras.lens.vignetting, 0.25);
+  EXPECT_FALSE(d.sensors.cameras.lens.hasDistortion());
+  const WorldSpec w = parseWorldText(camerasWith(R"({
+      "lens": {"vignetting": 0.1, "distortion": [-0.2, 0.05, 0.0, 0.001, 0.0]},
+      "blur": {"psf_sigma_px": [0.1, 0.2], "blurred_fraction": 0.5, "defocus_sigma_px": [2, 3],
+               "motion_share": 0.25, "motion_length_px": [4, 4]},
+      "exposure": {"gain": [0.9, 1.1], "offset_dn": [-2, 2], "gamma": [1, 1.2]},
+      "noise": {"read_sigma_dn": 3, "full_well_e": 9000}})"),
+                                     "w.json");
+  const CameraOptions& c = w.sensors.cameras;
+  EXPECT_EQ(c.lens.vignetting, 0.1);
+  EXPECT_EQ(c.lens.distortion[3], 0.001);
+  EXPECT_EQ(c.blur.psf_sigma_px[1], 0.2);
+  EXPECT_EQ(c.blur.motion_length_px[0], 4.0);
+  EXPECT_EQ(c.blur.motion_share, 0.25);
+  EXPECT_EQ(c.exposure.offset_dn[0], -2.0);
+  EXPECT_EQ(c.exposure.gamma[1], 1.2);
+  EXPECT_EQ(c.noise.read_sigma_dn, 3.0);
+  EXPECT_EQ(c.noise.full_well_e, 9000.0);
+}
+
+TEST(WorldLoader, BadCameraImagingValuesNameTheKey) {
+  const std::string order = errorOf(camerasWith(R"({"exposure": {"gain": [1.2, 0.8]}})"));
+  EXPECT_NE(order.find("w.json: sensors.cameras.exposure.gain: [1.2, 0.8]: the lower bound"),
+            std::string::npos)
+      << order;
+  const std::string range = errorOf(camerasWith(R"({"exposure": {"gain": [0, 1]}})"));
+  EXPECT_NE(range.find("sensors.cameras.exposure.gain: 0 is out of range (0, 10]"),
+            std::string::npos)
+      << range;
+  const std::string shape = errorOf(camerasWith(R"({"blur": {"defocus_sigma_px": 2}})"));
+  EXPECT_NE(shape.find("sensors.cameras.blur.defocus_sigma_px: expected an array of 2 numbers"),
+            std::string::npos)
+      << shape;
+  const std::string fraction = errorOf(camerasWith(R"({"blur": {"blurred_fraction": 1.3}})"));
+  EXPECT_NE(fraction.find("sensors.cameras.blur.blurred_fraction"), std::string::npos) << fraction;
+  const std::string noise = errorOf(camerasWith(R"({"noise": {"full_well_e": "big"}})"));
+  EXPECT_NE(noise.find("sensors.cameras.noise.full_well_e: expected a number"), std::string::npos)
+      << noise;
+  const std::string typo = errorOf(camerasWith(R"({"noise": {"read_sigma": 2}})"));
+  EXPECT_NE(typo.find("unknown key \"sensors.cameras.noise.read_sigma\""), std::string::npos)
+      << typo;
+  EXPECT_NE(typo.find("did you mean \"read_sigma_dn\""), std::string::npos) << typo;
+  const std::string tangential =
+      errorOf(camerasWith(R"({"lens": {"distortion": [0, 0, 0.3, 0, 0]}})"));
+  EXPECT_NE(tangential.find("sensors.cameras.lens.distortion: the tangential"), std::string::npos)
+      << tangential;
+  const std::string fold = errorOf(camerasWith(R"({"lens": {"distortion": [-0.6, 0, 0, 0, 0]}})"));
+  EXPECT_NE(fold.find("lens.distortion: the radial distortion folds over"), std::string::npos)
+      << fold;
+  const std::string moved = errorOf(R"({"name": "t", "path": {"waypoints": [[1, 0], [2, 0]]},
+                                        "noise": {"image_sigma": 2}})");
+  EXPECT_NE(moved.find("noise.image_sigma: moved"), std::string::npos) << moved;
+  EXPECT_NE(moved.find("sensors.cameras.noise"), std::string::npos) << moved;
+}
+
 TEST(WorldLoader, SyntaxErrorsAndDuplicateKeys) {
   EXPECT_NE(errorOf("{\"name\": ").find("w.json: invalid JSON"), std::string::npos);
   EXPECT_NE(errorOf(R"({"name": "a", "name": "b"})").find("duplicate key \"name\""),

@@ -97,6 +97,29 @@ void readSurfaces(const json& doc, const Fields& f, GroundTruth& gt) {
   }
 }
 
+void readPosters(const json& doc, const Fields& f, const std::filesystem::path& dir,
+                 GroundTruth& gt) {
+  if (!doc.contains("posters")) {
+    return;
+  }
+  for (const json& p : doc["posters"]) {
+    GtPoster poster;
+    poster.id = static_cast<int>(f.number(p, "id", "posters[]"));
+    const std::string where = "posters[id " + std::to_string(poster.id) + "]";
+    poster.wall_id = static_cast<int>(f.number(p, "wall_id", where));
+    const json& c = f.at(p, "corners", where);
+    if (!c.is_array() || c.size() != 4) {
+      f.fail(where + ".corners must have 4 points");
+    }
+    for (int k = 0; k < 4; ++k) {
+      poster.corners[k] = f.vec3(c[k], where + ".corners");
+    }
+    poster.image = dir / f.at(p, "image", where).get<std::string>();
+    poster.pixels_per_m = f.number(p, "pixels_per_m", where);
+    gt.posters.push_back(poster);
+  }
+}
+
 void readClutter(const json& doc, const Fields& f, GroundTruth& gt) {
   if (!doc.contains("clutter")) {
     return;
@@ -227,6 +250,8 @@ GroundTruth readGroundTruth(const std::filesystem::path& path) {
     readPoses(doc, f, gt);
     readSurfaces(doc, f, gt);
     readClutter(doc, f, gt);
+    readPosters(doc, f, path.parent_path(), gt);
+
     readHits(doc, f, gt);
   } catch (const json::exception& e) {
     f.fail(std::string("unexpected field type: ") + e.what());

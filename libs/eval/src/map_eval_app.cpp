@@ -15,6 +15,7 @@
 #include "pmap/eval/surface_evaluation.h"
 #include "pmap/eval/surface_files.h"
 #include "pmap/eval/surface_report.h"
+#include "pmap/eval/texture_quality.h"
 #include "pmap/products/json_file.h"
 
 namespace pmap::eval {
@@ -35,11 +36,19 @@ std::optional<MapEvalArgs> parseArgs(int argc, const char* const* argv) {
                                   "FILE", cmd);
   TCLAP::ValueArg<std::string> out("o", "out", "evaluation output", false, "eval.json", "eval.json",
                                    cmd);
+  TCLAP::ValueArg<double> shift("", "texture-max-shift-px",
+                                "registration search of the poster texture score, texels either "
+                                "way (default 2)",
+                                false, 2.0, "PX", cmd);
   TCLAP::SwitchArg quiet("q", "quiet", "no report on stdout", cmd);
   if (!config::parseCommandLine(cmd, argc, argv)) {
     return std::nullopt;
   }
-  return MapEvalArgs{map.getValue(), gt.getValue(), out.getValue(), quiet.getValue()};
+  if (!(shift.getValue() >= 0.0 && shift.getValue() <= 50.0)) {
+    throw ConfigError("usage: --texture-max-shift-px must be in [0, 50]");
+  }
+  return MapEvalArgs{map.getValue(), gt.getValue(), out.getValue(), quiet.getValue(),
+                     shift.getValue()};
 }
 
 json poseJson(const PoseErrors& e) {
@@ -82,6 +91,40 @@ void addSurfaceEvaluation(const MapEvalArgs& args, const GroundTruth& gt, const 
   addSurfaceKeys(evaluateSurfaces(gt, *points, surfaces, map_to_gt, options), options, doc);
 }
 
+/// The texture keys, when the map has a textures.csv and the world posters.
+void addTextureEvaluation(const MapEvalArgs& args, const GroundTruth& gt, const Rigid2D& map_to_gt,
+                          json& doc) {
+  const fs::path csv = args.map_dir / "textures.csv";
+  if (!fs::exists(csv) || gt.posters.empty()) {
+    return;
+  }
+  TextureQualityOptions options;
+  options.max_shift_px = args.texture_max_shift_px;
+  json posters = json::array();
+  double min_psnr = 0, sum = 0;
+  std::size_t scored = 0;
+  for (const PosterScore& s : scorePosters(gt, readMapTextures(csv), map_to_gt, options)) {
+    json p = {{"poster", s.poster_id}, {"surface", s.surface_id}};
+    if (s.surface_id >= 0) {
+      p.update({{"psnr_db", s.psnr_db},
+                {"psnr_unshifted_db", s.psnr_unshifted_db},
+                {"shift_px", {s.shift_px.x(), s.shift_px.y()}},
+                {"pixels_per_m", s.pixels_per_m},
+                {"cells", s.cells},
+                {"covered", s.covered}});
+      min_psnr = scored == 0 ? s.psnr_db : std::min(min_psnr, s.psnr_db);
+      sum += s.psnr_db;
+      ++scored;
+    }
+    posters.push_back(p);
+  }
+  doc["texture"] = {{"posters", posters},
+                    {"posters_scored", scored},
+                    {"max_shift_px", options.max_shift_px},
+                    {"psnr_db_min", scored > 0 ? json(min_psnr) : json(nullptr)},
+                    {"psnr_db_mean", scored > 0 ? json(sum / scored) : json(nullptr)}};
+}
+
 }  // namespace
 
 json evaluateMap(const MapEvalArgs& args) {
@@ -106,6 +149,7 @@ json evaluateMap(const MapEvalArgs& args) {
     doc["label_check"] = labelJson(checkLabels(gt, *points, pe.alignment));
   }
   addSurfaceEvaluation(args, gt, points ? &*points : nullptr, pe.alignment, doc);
+  addTextureEvaluation(args, gt, pe.alignment, doc);
   return doc;
 }
 
@@ -128,6 +172,17 @@ int mapEvalMain(int argc, const char* const* argv) {
                     doc["label_check"]["median_m"].get<double>());
       }
       std::fputs(surfaceReportText(doc).c_str(), stdout);
+      if (doc.contains("texture")) {
+        for (const json& p : doc["texture"]["posters"]) {
+          if (p.contains("psnr_db")) {
+            std::printf("poster %d on surface %d: PSNR %.2f dB (shift %.1f, %.1f px)\n",
+                        p["poster"].get<int>(), p["surface"].get<int>(), p["psnr_db"].get<double>(),
+                        p["shift_px"][0].get<double>(), p["shift_px"][1].get<double>());
+          } else {
+            std::printf("poster %d: not textured in the map\n", p["poster"].get<int>());
+          }
+        }
+      }
     }
     return 0;
   } catch (const Error& e) {

@@ -8,6 +8,7 @@
 
 #include "pmap/common/error.h"
 #include "pmap/common/text.h"
+#include "pmap/eval/csv_row.h"
 
 namespace pmap::eval {
 
@@ -18,46 +19,6 @@ namespace {
 
 constexpr std::size_t kColumns = 18;
 constexpr double kUnitNormalTolerance = 1e-3;
-
-/// Splits on commas, keeping empty fields (so "1,,2" has 3 fields).
-std::vector<std::string> splitCsv(const std::string& line) {
-  std::vector<std::string> fields(1);
-  for (const char ch : line) {
-    if (ch == ',') {
-      fields.emplace_back();
-    } else {
-      fields.back() += ch;
-    }
-  }
-  return fields;
-}
-
-class RowParser {
- public:
-  RowParser(const std::vector<std::string>& fields, std::string where)
-      : fields_(fields), where_(std::move(where)) {}
-
-  double number(std::size_t k) const {
-    const auto v = parseDouble(fields_[k]);
-    if (!v) {
-      fail("column " + std::to_string(k + 1) + " '" + trim(fields_[k]) +
-           "' is not a finite number");
-    }
-    return *v;
-  }
-  std::int64_t count(std::size_t k, const char* name) const {
-    const auto v = parseInt(fields_[k]);
-    if (!v || *v < 0) {
-      fail(std::string(name) + " '" + trim(fields_[k]) + "' is not an integer >= 0");
-    }
-    return *v;
-  }
-  [[noreturn]] void fail(const std::string& what) const { throw InputError(where_ + what); }
-
- private:
-  const std::vector<std::string>& fields_;
-  std::string where_;
-};
 
 MapSurface parseRow(const std::string& line, const std::string& where) {
   const std::vector<std::string> fields = splitCsv(line);

@@ -86,6 +86,16 @@ std::optional<MapperArgs> parseMapperArgs(int argc, const char* const* argv) {
                                 cmd);
   TCLAP::SwitchArg accept_truncated("", "accept-truncated",
                                     "map the complete records of a truncated rawlog", cmd);
+  TCLAP::SwitchArg no_textures(
+      "", "no-textures", "geometry only: no camera textures (as [Texture] enabled = false)", cmd);
+  TCLAP::SwitchArg gui("", "gui",
+                       "show the growing map, the current scans and the robot in a 3D window "
+                       "while mapping (MRPT display window, as icp-slam)",
+                       cmd);
+  TCLAP::ValueArg<double> gui_hold("", "gui-hold",
+                                   "with --gui: keep the final map shown S seconds, then exit "
+                                   "(default: until the window is closed or a key pressed)",
+                                   false, -1.0, "S", cmd);
   TCLAP::SwitchArg quiet("q", "quiet", "no progress line", cmd);
 
   if (!config::parseCommandLine(cmd, argc, argv)) {
@@ -115,6 +125,13 @@ std::optional<MapperArgs> parseMapperArgs(int argc, const char* const* argv) {
   a.poses_only = poses_only.getValue();
   a.accept_truncated = accept_truncated.getValue();
   a.quiet = quiet.getValue();
+  a.no_textures = no_textures.getValue();
+  a.gui = gui.getValue();
+  a.gui_hold_s = gui_hold.getValue();
+  if (gui_hold.isSet() && (!a.gui || !(a.gui_hold_s >= 0.0 && a.gui_hold_s <= 86400.0))) {
+    throw ConfigError("usage: --gui-hold needs --gui and a number of seconds in [0, 86400]");
+  }
+
   if (from.getValue() < 0 || decimate.getValue() < 1) {
     throw ConfigError("usage: --from-index must be >= 0 and --decimate >= 1");
   }

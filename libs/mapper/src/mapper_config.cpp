@@ -10,7 +10,8 @@ namespace pmap::mapper {
 namespace {
 
 const std::vector<std::string>& projectSections() {
-  static const std::vector<std::string> s = {"Sensors", "Output", "PlanarEM", "OnlineEM"};
+  static const std::vector<std::string> s = {"Sensors", "Output", "PlanarEM", "OnlineEM",
+                                             "Texture"};
   return s;
 }
 
@@ -48,6 +49,7 @@ const std::vector<std::string>& mrptSections() {
 void OutputOptions::load(config::SectionReader& reader) {
   reader.read("raw_map", raw_map);
   reader.read("raw_max_edge_m", raw_mesh.max_edge_m);
+  reader.read("scene_points", scene_points);
 }
 
 bool OutputOptions::validate(std::string* why) const {
@@ -100,6 +102,25 @@ void OnlineEmSection::load(config::SectionReader& r) {
   r.read("select_every_scans", online.select_every_scans);
 }
 
+void TextureSection::load(config::SectionReader& r) {
+  texture::TextureOptions& t = texture;
+  r.read("enabled", t.enabled);
+  r.read("pixels_per_m", t.pixels_per_m);
+  r.read("max_side_px", t.max_side_px);
+  r.read("max_total_mpx", t.max_total_mpx);
+  r.read("memory_budget_mb", t.memory_budget_mb);
+  r.read("blend", t.blend);
+  r.read("max_view_angle_deg", t.max_view_angle_deg);
+  r.read("max_distance_m", t.max_distance_m);
+  r.read("angle_power", t.angle_power);
+  r.read("feather_px", t.feather_px);
+  r.read("sharpness_power", t.sharpness_power);
+  r.read("exposure_compensation", t.exposure_compensation);
+  r.read("occlusion_margin_m", t.occlusion_margin_m);
+
+  r.read("threads", t.threads);
+}
+
 bool PlanarEmSection::validate(std::string* why) const {
   if (!(cloud_neighbour_radius_m > 0.0)) {
     *why = "cloud_neighbour_radius_m must be > 0";
@@ -109,8 +130,13 @@ bool PlanarEmSection::validate(std::string* why) const {
 }
 
 MapperConfig loadMapperConfig(const std::filesystem::path& path) {
-  MapperConfig cfg{
-      config::IniDocument::load(path), std::make_shared<config::EffectiveConfig>(), {}, {}, {}, {}};
+  MapperConfig cfg{config::IniDocument::load(path),
+                   std::make_shared<config::EffectiveConfig>(),
+                   {},
+                   {},
+                   {},
+                   {},
+                   {}};
   rejectUnknownSections(cfg.doc);
   config::loadOptions(cfg.doc, "Sensors", cfg.sensors, cfg.effective.get());
   config::loadOptions(cfg.doc, "Output", cfg.output, cfg.effective.get());
@@ -118,6 +144,9 @@ MapperConfig loadMapperConfig(const std::filesystem::path& path) {
   OnlineEmSection online;
   config::loadOptions(cfg.doc, "OnlineEM", online, cfg.effective.get());
   cfg.online_em = online.online;
+  TextureSection texture;
+  config::loadOptions(cfg.doc, "Texture", texture, cfg.effective.get());
+  cfg.texture = texture.texture;
   return cfg;
 }
 

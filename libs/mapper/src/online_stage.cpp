@@ -5,7 +5,8 @@
 #include <thread>
 
 #include "pmap/common/atomic_file.h"
-#include "pmap/products/planar_map_files.h"
+#include "pmap/products/map_model.h"
+#include "pmap/products/map_vrml.h"
 
 namespace pmap::mapper {
 
@@ -42,8 +43,8 @@ void OnlineStage::writeSnapshot(const points::PointMap& map) const {
   const em::PlanarMap m = em_.map();
   std::vector<Eigen::Vector3d> pts(map.xyz().begin(),
                                    map.xyz().begin() + static_cast<std::ptrdiff_t>(em_.points()));
-  products::writeVrml(
-      dir / name, products::planarMapMeshes(m, pts),
+  products::writeMapVrml(
+      dir / name, products::buildMapModel(m, pts, {}),
       "planar-mapper online map after " + std::to_string(history_.size()) + " structure scans");
 }
 

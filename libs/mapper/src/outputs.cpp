@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pmap/common/atomic_file.h"
+#include "pmap/mapper/map_outputs.h"
 #include "pmap/poses/poses_file.h"
 #include "pmap/products/json_file.h"
 #include "pmap/products/planar_map_files.h"
@@ -167,7 +168,7 @@ void writeRawMap(const fs::path& path, const MappingResult& r) {
 }  // namespace
 
 void writeOutputs(const MapperConfig& config, const MapperArgs& args, const MappingResult& r,
-                  double elapsed_before_write_s) {
+                  const MapProducts* products, double elapsed_before_write_s) {
   const auto t0 = std::chrono::steady_clock::now();
   ensureWritableDirectory(args.out);
   writeTextFileAtomically(args.out / "effective.ini",
@@ -188,16 +189,20 @@ void writeOutputs(const MapperConfig& config, const MapperArgs& args, const Mapp
     }
     if (r.em) {
       products::writeSurfacesCsv(args.out / "surfaces.csv", r.em->map.surfaces);
-      products::writeVrml(args.out / "map.wrl", products::planarMapMeshes(r.em->map, r.map.xyz()),
-                          "planar-mapper map: " + std::to_string(r.em->map.surfaces.size()) +
-                              " rectangles, " + std::to_string(r.em->map.fine_triangles.size()) +
-                              " fine triangles");
+    }
+    if (products != nullptr) {
+      writeMapFiles(args.out, *products, r, config.output);
     }
   }
   const double write_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  products::writeJsonFile(args.out / "summary.json",
-                          summaryJson(args, r, write_s, elapsed_before_write_s + write_s));
+  json summary = summaryJson(args, r, write_s, elapsed_before_write_s + write_s);
+  if (products != nullptr) {
+    summary["texture"] = textureSummary(config, *products);
+    summary["timing_s"]["texture"] = products->seconds;
+    summary["report_warnings"] = writeReportFiles(args.out, *products, r, summary);
+  }
+  products::writeJsonFile(args.out / "summary.json", summary);
 }
 
 }  // namespace pmap::mapper

@@ -43,10 +43,12 @@ std::unique_ptr<poses::IcpPoseTracker> makeTracker(const MapperConfig& config) {
 
 class RawlogRun {
  public:
-  RawlogRun(const MapperConfig& config, const MapperArgs& args, MappingResult& result)
+  RawlogRun(const MapperConfig& config, const MapperArgs& args, MappingResult& result,
+            LiveView* live)
       : config_(config),
         args_(args),
         result_(result),
+        live_(live),
         online_(args.mode == "online" && !args.poses_only
                     ? std::make_unique<OnlineStage>(config.planar_em.em, config.online_em, args.out,
                                                     args.snapshot_every)
@@ -106,6 +108,11 @@ class RawlogRun {
       result_.first_time = seen_any_ ? std::min(result_.first_time, t) : t;
       result_.last_time = seen_any_ ? std::max(result_.last_time, t) : t;
       seen_any_ = true;
+      if (item.roles.camera && !args_.poses_only && !args_.no_textures) {
+        if (auto img = std::dynamic_pointer_cast<mrpt::obs::CObservationImage>(item.obs)) {
+          result_.images.push_back(std::move(img));
+        }
+      }
       if (item.roles.structure && !args_.poses_only) {
         input::StructureScan scan = input::extractStructureScan(*item.obs, item.structure_index);
         result_.dropped += scan.dropped;
@@ -130,6 +137,11 @@ class RawlogRun {
       online_->addScan(result_.map, record);
     } else if (online_) {
       unorganised_ = true;
+    }
+    if (live_ != nullptr && live_->due()) {
+      const std::optional<em::PlanarMap> planar =
+          online_ && !unorganised_ ? std::optional<em::PlanarMap>(online_->map()) : std::nullopt;
+      live_->update(result_.map, record, planar ? &*planar : nullptr);
     }
   }
 
@@ -194,6 +206,7 @@ class RawlogRun {
   const MapperConfig& config_;
   const MapperArgs& args_;
   MappingResult& result_;
+  LiveView* live_;
   std::unique_ptr<OnlineStage> online_;
   bool unorganised_ = false;
   points::RawMeshBuilder mesh_;
@@ -229,12 +242,12 @@ void runEm(const MapperConfig& config, MappingResult& result) {
 
 }  // namespace
 
-MappingResult runPipeline(const MapperConfig& config, const MapperArgs& args) {
+MappingResult runPipeline(const MapperConfig& config, const MapperArgs& args, LiveView* live) {
   MappingResult result;
   if (!args.cloud.empty()) {
     result = runCloud(args);
   } else {
-    RawlogRun(config, args, result).run();
+    RawlogRun(config, args, result, live).run();
   }
   const bool online_done = result.em_mode == "online";
   if (!args.poses_only && (args.mode == "offline" || (args.mode == "online" && !online_done))) {

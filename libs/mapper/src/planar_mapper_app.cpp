@@ -2,9 +2,11 @@
 
 #include <chrono>
 #include <cstdio>
+#include <memory>
 
 #include "pmap/common/error.h"
 #include "pmap/common/text.h"
+#include "pmap/mapper/map_products.h"
 #include "pmap/mapper/outputs.h"
 #include "pmap/mapper/pipeline.h"
 
@@ -21,10 +23,24 @@ bool PlanarMapperApp::initialize(int argc, const char* const* argv) {
 
 void PlanarMapperApp::run() {
   const auto t0 = std::chrono::steady_clock::now();
-  const MappingResult result = runPipeline(*config_, *args_);
+  std::unique_ptr<LiveView> live;
+  if (args_->gui) {
+    LiveViewOptions options;
+    options.hold_s = args_->gui_hold_s;
+    live = std::make_unique<LiveView>(options);
+  }
+  const MappingResult result = runPipeline(*config_, *args_, live.get());
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  writeOutputs(*config_, *args_, result, elapsed);
+  std::optional<MapProducts> products;
+  if (result.em) {
+    products = buildMapProducts(*config_, *args_, result);
+  }
+  writeOutputs(*config_, *args_, result, products ? &*products : nullptr, elapsed);
+  if (live) {
+    live->finish(products ? products->model : products::MapModel{}, result.map);
+  }
+
   if (!args_->quiet) {
     std::fprintf(stderr, "planar-mapper: %zu scans, %zu points, %zu raw triangles -> %s\n",
                  result.placement.placed, result.map.size(), result.raw_triangles.size(),

@@ -25,37 +25,6 @@ void writeSurfacesCsv(const std::filesystem::path& path, const std::vector<em::S
   });
 }
 
-std::vector<VrmlMesh> planarMapMeshes(const em::PlanarMap& map,
-                                      const std::vector<Eigen::Vector3d>& points) {
-  std::vector<VrmlMesh> meshes;
-  for (const em::Surface& s : map.surfaces) {
-    VrmlMesh m;
-    m.name = "Surface" + std::to_string(s.id);
-    const auto c = s.rect.corners();
-    m.vertices.assign(c.begin(), c.end());
-    m.triangles = {{0, 1, 2}, {0, 2, 3}};
-    const double vertical = std::abs(s.rect.normal.z());
-    m.color = vertical < 0.2   ? Eigen::Vector3d(0.85, 0.83, 0.78)   // walls, doors
-              : vertical > 0.9 ? Eigen::Vector3d(0.70, 0.78, 0.88)   // ceilings, floors
-                               : Eigen::Vector3d(0.80, 0.70, 0.85);  // slanted
-    meshes.push_back(std::move(m));
-  }
-  if (!map.fine_triangles.empty()) {
-    VrmlMesh fine;
-    fine.name = "FineTriangles";
-    fine.color = {0.75, 0.25, 0.2};
-    for (const em::Triangle& t : map.fine_triangles) {
-      const auto base = static_cast<std::uint32_t>(fine.vertices.size());
-      for (const std::int32_t i : t) {
-        fine.vertices.push_back(points[static_cast<std::size_t>(i)]);
-      }
-      fine.triangles.push_back({base, base + 1, base + 2});
-    }
-    meshes.push_back(std::move(fine));
-  }
-  return meshes;
-}
-
 std::vector<int> surfaceIdsOfPoints(const em::PlanarMap& map) {
   std::vector<int> ids(map.assignment.size(), -1);
   for (std::size_t i = 0; i < ids.size(); ++i) {

@@ -28,13 +28,17 @@ void writeEncoded(const std::filesystem::path& path, const cv::Mat& image, const
       true);
 }
 
-std::string imageFileName(const std::string& label, int index) {
+RigidTransform cameraToWorld(const CameraMount& mount, const Pose2D& robot) {
+  return compose(toTransform(robot), toTransform(cameraMountPose(mount)));
+}
+
+}  // namespace
+
+std::string cameraImageFileName(const std::string& label, int index) {
   char name[32];
   std::snprintf(name, sizeof(name), "_%06d.jpg", index);
   return label + name;
 }
-
-}  // namespace
 
 std::vector<cv::Mat> writePosterImages(const World& world, std::uint64_t seed,
                                        const std::filesystem::path& dir) {
@@ -57,37 +61,55 @@ CameraRig::CameraRig(const World& world, const std::vector<cv::Mat>& posters, st
     : world_(world),
       seed_(seed),
       images_dir_(std::move(images_dir)),
-      intrinsics_(PinholeIntrinsics::fromFov(world.sensors.cameras.width_px,
-                                             world.sensors.cameras.height_px,
-                                             degToRad(world.sensors.cameras.hfov_deg))),
+      pipeline_(world.sensors.cameras),
       renderer_(world, posters, static_cast<std::uint32_t>(deriveSeed(seed, "textures"))) {}
 
 cv::Mat CameraRig::renderMount(const CameraMount& mount, const Pose2D& robot) const {
-  const RigidTransform cam = compose(toTransform(robot), toTransform(cameraMountPose(mount)));
-  return renderer_.render(intrinsics_, cam);
+  return pipeline_.opticalImage(
+      renderer_.render(pipeline_.renderIntrinsics(), cameraToWorld(mount, robot)));
 }
 
-std::vector<mrpt::obs::CObservation::Ptr> CameraRig::capture(const Pose2D& robot, int index,
-                                                             mrpt::Clock::time_point stamp) const {
+FrameEffects CameraRig::frameEffects(const std::string& label, int index) const {
+  return drawFrameEffects(world_.sensors.cameras, deriveSeed(seed_, "image-effects:" + label,
+                                                             static_cast<std::uint64_t>(index)));
+}
+
+DevelopedFrame CameraRig::developMount(const CameraMount& mount, const Pose2D& robot,
+                                       int index) const {
+  const cv::Mat render =
+      renderer_.render(pipeline_.renderIntrinsics(), cameraToWorld(mount, robot));
+  const std::uint64_t noise_seed =
+      deriveSeed(seed_, "image-noise:" + mount.label, static_cast<std::uint64_t>(index));
+  return pipeline_.develop(render, frameEffects(mount.label, index), noise_seed);
+}
+
+Capture CameraRig::capture(const Pose2D& robot, int index, mrpt::Clock::time_point stamp) const {
   const CameraOptions& opts = world_.sensors.cameras;
+  Capture out;
+  out.records.resize(opts.mounts.size());
   // Each image depends only on (seed, label, index): rendering in parallel is deterministic.
   std::vector<std::future<void>> jobs;
-  for (const CameraMount& mount : opts.mounts) {
-    jobs.push_back(std::async(std::launch::async, [&, mount] {
-      const cv::Mat clean = renderMount(mount, robot);
-      const std::uint64_t noise_seed =
-          deriveSeed(seed_, "image-noise:" + mount.label, static_cast<std::uint64_t>(index));
-      writeJpeg(images_dir_ / imageFileName(mount.label, index),
-                finishImage(clean, world_.noise.image_sigma, noise_seed), opts.jpeg_quality);
+  for (std::size_t i = 0; i < opts.mounts.size(); ++i) {
+    jobs.push_back(std::async(std::launch::async, [&, i] {
+      const CameraMount& mount = opts.mounts[i];
+      const DevelopedFrame frame = developMount(mount, robot, index);
+      ImageRecord& record = out.records[i];
+      record.file = cameraImageFileName(mount.label, index);
+      record.label = mount.label;
+      record.index = index;
+      record.timestamp_s = mrpt::Clock::toDouble(stamp);
+      record.effects = frameEffects(mount.label, index);
+      record.quality = frame.quality;
+      writeJpeg(images_dir_ / record.file, frame.image, opts.jpeg_quality);
     }));
   }
   for (auto& job : jobs) {
     job.get();  // rethrows OutputError from a job
   }
-  std::vector<mrpt::obs::CObservation::Ptr> out;
   for (const CameraMount& mount : opts.mounts) {
-    out.push_back(makeImageObservation(mount.label, intrinsics_, cameraMountPose(mount),
-                                       imageFileName(mount.label, index), stamp));
+    out.observations.push_back(
+        makeImageObservation(mount.label, pipeline_.intrinsics(), cameraMountPose(mount),
+                             cameraImageFileName(mount.label, index), stamp));
   }
   return out;
 }

@@ -20,6 +20,10 @@ void GroundTruthRecorder::addStructureScan(double t_s, const std::string& label,
   scans_.push_back(StructureScan{t_s, label, hits});
 }
 
+void GroundTruthRecorder::addImage(const ImageRecord& record) {
+  images_.push_back(record);
+}
+
 OrderedJson GroundTruthRecorder::toJson(const World& world, const GroundTruthMeta& meta) const {
   OrderedJson doc;
   doc["format"] = "pmap-gt/1";
@@ -58,6 +62,11 @@ OrderedJson GroundTruthRecorder::toJson(const World& world, const GroundTruthMet
                      {"hits", scans_[i].hits}});
   }
   doc["structure_scans"] = scans;
+  OrderedJson images = OrderedJson::array();
+  for (const ImageRecord& image : images_) {
+    images.push_back(imageJson(image, meta.images_dir_name));
+  }
+  doc["images"] = images;
   return doc;
 }
 

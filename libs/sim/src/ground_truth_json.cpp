@@ -1,5 +1,6 @@
 #include "pmap/sim/ground_truth_json.h"
 
+#include <cmath>
 #include <sstream>
 
 #include "pmap/sim/laser_sim.h"
@@ -32,6 +33,26 @@ OrderedJson laserJson(const LaserOptions& laser) {
   j["right_to_left"] = true;
   j["max_range_m"] = laser.max_range_m;
   j["time_offset_s"] = laser.time_offset_s;
+  return j;
+}
+
+/// `v` rounded to a multiple of 1 / `per_unit` (measurements, to keep
+/// gt.json short; dividing by an exact integer prints the short decimal).
+double rounded(double v, double per_unit) {
+  return std::round(v * per_unit) / per_unit;
+}
+
+OrderedJson cameraImagingJson(const CameraOptions& c) {
+  OrderedJson j;
+  j["lens"] = {{"vignetting", c.lens.vignetting}, {"distortion", c.lens.distortion}};
+  j["blur"] = {{"psf_sigma_px", c.blur.psf_sigma_px},
+               {"blurred_fraction", c.blur.blurred_fraction},
+               {"defocus_sigma_px", c.blur.defocus_sigma_px},
+               {"motion_share", c.blur.motion_share},
+               {"motion_length_px", c.blur.motion_length_px}};
+  j["exposure"] = {
+      {"gain", c.exposure.gain}, {"offset_dn", c.exposure.offset_dn}, {"gamma", c.exposure.gamma}};
+  j["noise"] = {{"read_sigma_dn", c.noise.read_sigma_dn}, {"full_well_e", c.noise.full_well_e}};
   return j;
 }
 
@@ -124,7 +145,8 @@ OrderedJson sensorsJson(const World& world, const PinholeIntrinsics& k, bool cam
     c["fy"] = k.fy;
     c["cx"] = k.cx;
     c["cy"] = k.cy;
-    c["distortion"] = {0.0, 0.0, 0.0, 0.0, 0.0};
+    c["distortion"] = k.distortion;  // k1 k2 p1 p2 k3
+    c["vignetting"] = s.cameras.lens.vignetting;
     c["rate_hz"] = s.cameras.rate_hz;
     c["time_offset_s"] = s.cameras.time_offset_s;
     cams.push_back(c);
@@ -151,8 +173,27 @@ OrderedJson configJson(const World& world) {
                 {"odometry_heading_drift_deg_per_m", n.odometry_heading_drift_deg_per_m},
                 {"odometry_random_signs", n.odometry_random_signs},
                 {"odometry_sigma_xy_m", n.odometry_sigma_xy_m},
-                {"odometry_sigma_yaw_deg", n.odometry_sigma_yaw_deg},
-                {"image_sigma", n.image_sigma}};
+                {"odometry_sigma_yaw_deg", n.odometry_sigma_yaw_deg}};
+  j["cameras"] = cameraImagingJson(world.sensors.cameras);
+  return j;
+}
+
+OrderedJson imageJson(const ImageRecord& r, const std::string& images_dir_name) {
+  OrderedJson j;
+  j["file"] = r.file;
+  j["image"] = images_dir_name + "/" + r.file;
+  j["timestamp"] = r.timestamp_s;
+  j["label"] = r.label;
+  j["index"] = r.index;
+  j["gain"] = r.effects.exposure.gain;
+  j["offset_dn"] = r.effects.exposure.offset_dn;
+  j["gamma"] = r.effects.exposure.gamma;
+  j["blur_sigma_px"] = r.effects.blur_sigma_px;
+  j["motion_blur_px"] = r.effects.motion_blur_px;
+  j["blurred"] = r.effects.blurred;
+  j["sharpness"] = rounded(r.quality.sharpness, 1.0e4);
+  j["laplacian_var"] = rounded(r.quality.laplacian_var, 100.0);
+  j["saturated_fraction"] = rounded(r.quality.saturated_fraction, 1.0e6);
   return j;
 }
 

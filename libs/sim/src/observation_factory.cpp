@@ -85,7 +85,13 @@ mrpt::obs::CObservationImage::Ptr makeImageObservation(const std::string& label,
   obs->cameraParams.ncols = static_cast<uint32_t>(k.width_px);
   obs->cameraParams.nrows = static_cast<uint32_t>(k.height_px);
   obs->cameraParams.setIntrinsicParamsFromValues(k.fx, k.fy, k.cx, k.cy);
-  obs->cameraParams.dist.fill(0.0);
+  const auto& d = k.distortion;  // k1 k2 p1 p2 k3
+  if (d[0] != 0.0 || d[1] != 0.0 || d[2] != 0.0 || d[3] != 0.0 || d[4] != 0.0) {
+    obs->cameraParams.setDistortionPlumbBob(d[0], d[1], d[2], d[3], d[4]);
+  } else {
+    obs->cameraParams.distortion = mrpt::img::DistortionModel::none;
+    obs->cameraParams.dist.fill(0.0);
+  }
   obs->cameraParams.cameraName = label;
   obs->image.setExternalStorage(file_name);
   return obs;

@@ -1,5 +1,7 @@
 #include "options_loader.h"
 
+#include <cmath>
+
 #include "pmap/common/error.h"
 
 namespace pmap::sim::detail {
@@ -28,6 +30,38 @@ CameraMount readMount(JsonReader r) {
   return m;
 }
 
+void readLens(JsonReader r, CameraLensOptions& lens) {
+  lens.vignetting = r.number("vignetting", lens.vignetting, closed(0.0, 0.9));
+  lens.distortion = r.quintuple("distortion", lens.distortion, closed(-10.0, 10.0));
+  if (std::abs(lens.distortion[2]) > 0.1 || std::abs(lens.distortion[3]) > 0.1) {
+    r.fail("distortion",
+           "the tangential coefficients p1, p2 (elements 2, 3) must be in [-0.1, 0.1]");
+  }
+  r.finish();
+}
+
+void readBlur(JsonReader r, CameraBlurOptions& blur) {
+  blur.psf_sigma_px = r.interval("psf_sigma_px", blur.psf_sigma_px, closed(0.0, 10.0));
+  blur.blurred_fraction = r.number("blurred_fraction", blur.blurred_fraction, closed(0.0, 1.0));
+  blur.defocus_sigma_px = r.interval("defocus_sigma_px", blur.defocus_sigma_px, closed(0.0, 20.0));
+  blur.motion_share = r.number("motion_share", blur.motion_share, closed(0.0, 1.0));
+  blur.motion_length_px = r.interval("motion_length_px", blur.motion_length_px, closed(0.0, 100.0));
+  r.finish();
+}
+
+void readExposure(JsonReader r, CameraExposureOptions& exposure) {
+  exposure.gain = r.interval("gain", exposure.gain, positive(10.0));
+  exposure.offset_dn = r.interval("offset_dn", exposure.offset_dn, closed(-100.0, 100.0));
+  exposure.gamma = r.interval("gamma", exposure.gamma, closed(0.2, 5.0));
+  r.finish();
+}
+
+void readCameraNoise(JsonReader r, CameraNoiseOptions& noise) {
+  noise.read_sigma_dn = r.number("read_sigma_dn", noise.read_sigma_dn, closed(0.0, 50.0));
+  noise.full_well_e = r.number("full_well_e", noise.full_well_e, closed(100.0, 1.0e7));
+  r.finish();
+}
+
 void readCameras(JsonReader r, CameraOptions& cams) {
   cams.enabled = r.boolean("enabled", cams.enabled);
   cams.rate_hz = r.number("rate_hz", cams.rate_hz, positive(100.0));
@@ -42,6 +76,10 @@ void readCameras(JsonReader r, CameraOptions& cams) {
       cams.mounts.push_back(readMount(m));
     }
   }
+  readLens(r.object("lens"), cams.lens);
+  readBlur(r.object("blur"), cams.blur);
+  readExposure(r.object("exposure"), cams.exposure);
+  readCameraNoise(r.object("noise"), cams.noise);
   r.finish();
 }
 
@@ -89,7 +127,10 @@ NoiseOptions readNoise(JsonReader r) {
   n.odometry_sigma_xy_m = r.number("odometry_sigma_xy_m", n.odometry_sigma_xy_m, closed(0.0, 1.0));
   n.odometry_sigma_yaw_deg =
       r.number("odometry_sigma_yaw_deg", n.odometry_sigma_yaw_deg, closed(0.0, 45.0));
-  n.image_sigma = r.number("image_sigma", n.image_sigma, closed(0.0, 100.0));
+  if (r.has("image_sigma")) {
+    r.fail("image_sigma",
+           "moved: image noise is sensors.cameras.noise (read_sigma_dn, full_well_e)");
+  }
   r.finish();
   std::string why;
   if (!n.validate(&why)) {

@@ -3,14 +3,17 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
-#include "pmap/sim/rng.h"
 #include "pmap/sim/surface_textures.h"
 
 namespace pmap::sim {
 namespace {
 
 constexpr double kNear_m = 0.02;
+/// Sample offsets (pixels) of the 2 x 2 area integration of poster pixels.
+constexpr std::pair<double, double> kSubpixelOffsets[4] = {
+    {-0.25, -0.25}, {0.25, -0.25}, {-0.25, 0.25}, {0.25, 0.25}};
 const cv::Vec3f kBackground(20.0f, 20.0f, 20.0f);
 
 struct PixelBox {
@@ -113,6 +116,18 @@ Eigen::Vector3f Renderer::surfaceColour(const Surface& s, const Eigen::Vector3d&
   return materialColour(materialForSurfaceKind(s.kind), local.x(), local.y(), variant);
 }
 
+bool Renderer::nearPoster(const Surface& s, const Eigen::Vector3d& p_world, double margin_m) const {
+  for (const int pi : s.poster_indices) {
+    const Poster& p = world_.posters[static_cast<std::size_t>(pi)];
+    const Eigen::Vector2d pl = p.rect.toLocal(p_world);
+    if (pl.x() >= -margin_m && pl.x() <= p.rect.length_u + margin_m && pl.y() >= -margin_m &&
+        pl.y() <= p.rect.length_v + margin_m) {
+      return true;
+    }
+  }
+  return false;
+}
+
 void Renderer::drawSurface(const Surface& s, Frame& f) const {
   std::vector<Eigen::Vector3d> poly;
   for (const Eigen::Vector3d& c : s.rect.corners()) {
@@ -147,7 +162,19 @@ void Renderer::drawSurface(const Surface& s, Frame& f) const {
       }
       depth[u] = t;
       const Eigen::Vector3d p_world = f.cam.apply(t * ray);
-      colour[u] = toVec(surfaceColour(s, p_world, local) * shading(n, ray, t));
+      Eigen::Vector3f c = surfaceColour(s, p_world, local);
+      if (nearPoster(s, p_world, 2.0 * t / f.k.fx)) {
+        // Posters carry detail at the pixel scale: integrate the pixel's area
+        // (2 x 2 samples) as a sensor pixel does, instead of point sampling.
+        c.setZero();
+        for (const auto& [du, dv] : kSubpixelOffsets) {
+          const Eigen::Vector3d sub = pixelRay(f.k, u + du, v + dv);
+          const Eigen::Vector3d q = (n_dot_o / n.dot(sub)) * sub;
+          const Eigen::Vector3d dq = q - o;
+          c += 0.25f * surfaceColour(s, f.cam.apply(q), Eigen::Vector2d(dq.dot(au), dq.dot(av)));
+        }
+      }
+      colour[u] = toVec(c * shading(n, ray, t));
     }
   }
 }
@@ -200,22 +227,6 @@ cv::Mat Renderer::render(const PinholeIntrinsics& k, const RigidTransform& camer
     drawClutter(c, f);
   }
   return f.colour;
-}
-
-cv::Mat finishImage(const cv::Mat& bgr_float, double sigma, std::uint64_t seed) {
-  Rng rng(seed);
-  cv::Mat out(bgr_float.rows, bgr_float.cols, CV_8UC3);
-  for (int v = 0; v < bgr_float.rows; ++v) {
-    const auto* in = bgr_float.ptr<cv::Vec3f>(v);
-    auto* px = out.ptr<cv::Vec3b>(v);
-    for (int u = 0; u < bgr_float.cols; ++u) {
-      for (int ch = 0; ch < 3; ++ch) {
-        const double value = in[u][ch] + (sigma > 0.0 ? sigma * rng.normal() : 0.0);
-        px[u][ch] = static_cast<unsigned char>(std::clamp(std::lround(value), 0L, 255L));
-      }
-    }
-  }
-  return out;
 }
 
 }  // namespace pmap::sim

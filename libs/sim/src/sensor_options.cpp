@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include "pmap/sim/camera_model.h"
+#include "pmap/sim/lens_distortion.h"
+
 namespace pmap::sim {
 namespace {
 
@@ -64,7 +67,14 @@ bool CameraOptions::validate(std::string* why) const {
       return fail(why, "look must be left, right, forward or backward");
     }
   }
-  return true;
+  std::string inner;
+  if (!lens.validate(&inner) || !blur.validate(&inner) || !exposure.validate(&inner) ||
+      !noise.validate(&inner)) {
+    return fail(why, inner);
+  }
+  const PinholeIntrinsics k =
+      PinholeIntrinsics::fromFov(width_px, height_px, hfov_deg * M_PI / 180.0);
+  return distortionIsUsable(k, lens.distortion, why);
 }
 
 SensorOptions::SensorOptions() {
@@ -121,9 +131,6 @@ bool NoiseOptions::validate(std::string* why) const {
   if (!(odometry_sigma_xy_m >= 0.0 && odometry_sigma_xy_m <= 1.0) ||
       !(odometry_sigma_yaw_deg >= 0.0 && odometry_sigma_yaw_deg <= 45.0)) {
     return fail(why, "odometry white noise must be in [0, 1] m and [0, 45] deg");
-  }
-  if (!(image_sigma >= 0.0 && image_sigma <= 100.0)) {
-    return fail(why, "image_sigma must be in [0, 100]");
   }
   return true;
 }

@@ -77,9 +77,11 @@ CycleRecord CycleRunner::run(std::size_t k, GroundTruthRecorder& gt) {
   const bool image_due = rig_ != nullptr && next_image_ / sensors.cameras.rate_hz <= t_k + 1e-9;
   if (image_due) {
     const double t_cam = t_k + sensors.cameras.time_offset_s;
-    for (auto& obs : rig_->capture(trajectory_.poseAtTime(t_cam), next_image_,
-                                   simTimestamp(sensors.start_time_s, t_cam))) {
-      timed.emplace_back(t_cam, obs);
+    const Capture capture = rig_->capture(trajectory_.poseAtTime(t_cam), next_image_,
+                                          simTimestamp(sensors.start_time_s, t_cam));
+    for (std::size_t i = 0; i < capture.observations.size(); ++i) {
+      timed.emplace_back(t_cam, capture.observations[i]);
+      gt.addImage(capture.records[i]);
       ++images_;
     }
     while (next_image_ / sensors.cameras.rate_hz <= t_k + 1e-9) {
@@ -118,6 +120,7 @@ GroundTruthMeta makeMeta(const World& world, const SimulatorOptions& options,
   meta.cameras_enabled = sensors.cameras.enabled;
   meta.intrinsics = PinholeIntrinsics::fromFov(sensors.cameras.width_px, sensors.cameras.height_px,
                                                degToRad(sensors.cameras.hfov_deg));
+  meta.intrinsics.distortion = sensors.cameras.lens.distortion;
   meta.odometry = {runner.odometry().scaleError(), runner.odometry().headingDriftRadPerM()};
   meta.path_length_m = trajectory.length_m();
   meta.duration_s = static_cast<double>(cycles - 1) / sensors.cycle_hz;

@@ -235,6 +235,43 @@ std::array<double, 3> JsonReader::triple(const std::string& key, const std::arra
   return {p[0], p[1], p[2]};
 }
 
+std::array<double, 2> JsonReader::interval(const std::string& key, const std::array<double, 2>& def,
+                                           const Range& range) {
+  const nlohmann::json* v = find(key);
+  if (v == nullptr) {
+    return def;
+  }
+  const Eigen::VectorXd p = fixedArray(key, *v, 2);
+  for (int i = 0; i < 2; ++i) {
+    if (!range.contains(p[i])) {
+      fail(key, formatNumber(p[i]) + " is out of range " + range.describe());
+    }
+  }
+  if (p[0] > p[1]) {
+    fail(key, "[" + formatNumber(p[0]) + ", " + formatNumber(p[1]) +
+                  "]: the lower bound exceeds the upper bound");
+  }
+  return {p[0], p[1]};
+}
+
+std::array<double, 5> JsonReader::quintuple(const std::string& key,
+                                            const std::array<double, 5>& def, const Range& range) {
+  const nlohmann::json* v = find(key);
+  if (v == nullptr) {
+    return def;
+  }
+  const Eigen::VectorXd p = fixedArray(key, *v, 5);
+  std::array<double, 5> out{};
+  for (int i = 0; i < 5; ++i) {
+    if (!range.contains(p[i])) {
+      fail(key, "element " + std::to_string(i) + ": " + formatNumber(p[i]) + " is out of range " +
+                    range.describe());
+    }
+    out[static_cast<std::size_t>(i)] = p[i];
+  }
+  return out;
+}
+
 std::vector<Eigen::Vector2d> JsonReader::points2(const std::string& key, std::size_t min_count) {
   const nlohmann::json* v = find(key);
   if (v == nullptr) {

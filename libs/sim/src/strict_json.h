@@ -54,6 +54,12 @@ class JsonReader {
   Eigen::Vector3d point3(const std::string& key);
   /// [a, b, c] with a default.
   std::array<double, 3> triple(const std::string& key, const std::array<double, 3>& def);
+  /// [lo, hi] with a default: both in `range`, lo <= hi.
+  std::array<double, 2> interval(const std::string& key, const std::array<double, 2>& def,
+                                 const Range& range);
+  /// [a, b, c, d, e] with a default, each in `range`.
+  std::array<double, 5> quintuple(const std::string& key, const std::array<double, 5>& def,
+                                  const Range& range);
   /// A required list of at least `min_count` [x, y] points.
   std::vector<Eigen::Vector2d> points2(const std::string& key, std::size_t min_count);
   /// A required list of exactly `count` [x, y, z] points.

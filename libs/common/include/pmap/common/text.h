@@ -37,4 +37,7 @@ std::string nearestWord(std::string_view word, const std::vector<std::string>& c
 /// Message; others their first non-empty line. At most 240 characters.
 std::string oneLineError(std::string_view what);
 
+/// `text` made safe inside an HTML element's content or attribute (& < > " ').
+std::string escapeHtml(std::string_view text);
+
 }  // namespace pmap

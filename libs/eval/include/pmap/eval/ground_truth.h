@@ -40,6 +40,16 @@ struct GtBox {
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();
 };
 
+/// A flush poster (texture only): corners bottom-left, bottom-right,
+/// top-right, top-left seen from the corridor; image row 0 is the top edge.
+struct GtPoster {
+  int id = -1;
+  int wall_id = -1;
+  std::array<Eigen::Vector3d, 4> corners;
+  std::filesystem::path image;  ///< resolved against the gt.json's directory
+  double pixels_per_m = 0;
+};
+
 struct GroundTruth {
   std::string world;
   double sigma_m = 0;
@@ -47,6 +57,8 @@ struct GroundTruth {
   std::vector<GtRectangle> surfaces;
   std::vector<GtCylinder> cylinders;
   std::vector<GtBox> boxes;
+  std::vector<GtPoster> posters;
+
   /// hits[scan index][beam] = id hit by the true ray, -1 for nothing.
   std::map<std::int64_t, std::vector<int>> hits;
 

@@ -12,6 +12,7 @@ struct MapEvalArgs {
   std::filesystem::path gt;
   std::filesystem::path out = "eval.json";
   bool quiet = false;
+  double texture_max_shift_px = 2.0;  ///< poster texture registration search (texels)
 };
 
 /// Computes the evaluation document (throws InputError for unreadable inputs).

@@ -24,7 +24,11 @@ struct MapperArgs {
   double playback_rate = 0.0;  ///< feed scans at R x their recorded pace (0: at once)
   bool poses_only = false;
   bool accept_truncated = false;
-  bool quiet = false;  ///< no progress line
+  bool quiet = false;        ///< no progress line
+  bool no_textures = false;  ///< geometry only
+  bool gui = false;          ///< live 3D window
+  double gui_hold_s = -1.0;  ///< --gui: final map shown this long (< 0: until closed)
+
   input::SelectionOptions selection;
 };
 

@@ -14,6 +14,7 @@
 #include "pmap/em/planar_em_options.h"
 #include "pmap/input/sensor_roles.h"
 #include "pmap/points/raw_mesh.h"
+#include "pmap/texture/texture_options.h"
 
 namespace pmap::config {
 class SectionReader;
@@ -25,6 +26,7 @@ namespace pmap::mapper {
 struct OutputOptions {
   bool raw_map = true;              ///< write raw.wrl, the paper's raw polygon map
   points::RawMeshOptions raw_mesh;  ///< raw_max_edge_m
+  bool scene_points = false;        ///< map.3Dscene also holds the raw points
   void load(config::SectionReader& reader);
   bool validate(std::string* why) const;
 };
@@ -36,6 +38,13 @@ struct PlanarEmSection {
   double cloud_neighbour_radius_m = 0.15;  ///< nearest-neighbour radius for clouds (m)
   void load(config::SectionReader& reader);
   bool validate(std::string* why) const;
+};
+
+/// [Texture]: camera textures (libs/texture, doc/textures.md).
+struct TextureSection {
+  texture::TextureOptions texture;
+  void load(config::SectionReader& reader);
+  bool validate(std::string* why) const { return texture.validate(why); }
 };
 
 /// [OnlineEM]: the online EM's bounds (libs/em, doc/em.md).
@@ -52,6 +61,7 @@ struct MapperConfig {
   OutputOptions output;
   PlanarEmSection planar_em;
   em::OnlineEmOptions online_em;
+  texture::TextureOptions texture;
 };
 
 /// Loads and validates the project's sections; rejects sections nobody owns.

@@ -3,8 +3,10 @@
 
 #include <filesystem>
 
+#include "pmap/mapper/map_products.h"
 #include "pmap/mapper/mapper_args.h"
 #include "pmap/mapper/mapper_config.h"
+
 #include "pmap/mapper/pipeline.h"
 
 namespace pmap::mapper {
@@ -13,6 +15,6 @@ namespace pmap::mapper {
 /// effective.ini (only poses.txt, summary.json and effective.ini with
 /// --poses-only). `total_s` is the wall time so far; writing time is added.
 void writeOutputs(const MapperConfig& config, const MapperArgs& args, const MappingResult& result,
-                  double elapsed_before_write_s);
+                  const MapProducts* products, double elapsed_before_write_s);
 
 }  // namespace pmap::mapper

@@ -3,7 +3,10 @@
 // memory grows with the map, not with the file.
 #pragma once
 
+#include <mrpt/obs/CObservationImage.h>
+
 #include <array>
+
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -13,6 +16,7 @@
 #include "pmap/em/offline_em.h"
 #include "pmap/input/observation_source.h"
 #include "pmap/input/structure_points.h"
+#include "pmap/mapper/live_view.h"
 #include "pmap/mapper/mapper_args.h"
 #include "pmap/mapper/mapper_config.h"
 #include "pmap/mapper/online_stage.h"
@@ -50,14 +54,19 @@ struct MappingResult {
   /// Wall time of the pose stage for each input step that carried pose
   /// observations (ms).
   std::vector<double> pose_step_ms;
+  /// Camera images of the selected records (external images stay on disk;
+  /// embedded ones are held in memory), for the textures.
+  std::vector<mrpt::obs::CObservationImage::Ptr> images;
   /// What actually ran: online, offline, raw (online falls back to offline
   /// for unorganised clouds, which have no scan order).
   std::string em_mode;
   double duration() const { return last_time > first_time ? last_time - first_time : 0.0; }
 };
 
-/// Runs the pipeline on a rawlog or a PLY cloud. Throws ConfigError,
-/// InputError (bad data, nothing to map), ProcessingError.
-MappingResult runPipeline(const MapperConfig& config, const MapperArgs& args);
+/// Runs the pipeline on a rawlog or a PLY cloud, showing progress in `live`
+/// (--gui) when given. Throws ConfigError, InputError (bad data, nothing to
+/// map), ProcessingError.
+MappingResult runPipeline(const MapperConfig& config, const MapperArgs& args,
+                          LiveView* live = nullptr);
 
 }  // namespace pmap::mapper

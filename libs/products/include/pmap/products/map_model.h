@@ -18,10 +18,16 @@
 #include <string>
 #include <vector>
 
+#include "pmap/em/offline_em.h"
+
 namespace pmap::products {
 
 struct TexturedQuad {
   std::int32_t surface_id = -1;
+  /// Piece of its surface: long surfaces are textured as several tiles
+  /// (0, 1, ... in order along c0 -> c1, then c0 -> c3).
+  std::int32_t tile = 0;
+
   std::array<Eigen::Vector3d, 4> corners;  ///< c0 c1 c2 c3, counter-clockwise from the normal
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
   Eigen::Vector3d color{0.8, 0.8, 0.8};  ///< RGB in [0, 1], used without texture
@@ -42,7 +48,16 @@ struct MapModel {
   std::vector<Eigen::Vector3d> path;
 };
 
+/// The planar map as a model: one quad per surface, coloured by orientation
+/// (walls, ceilings and floors, slanted), its normal turned towards the
+/// robot's side (the path position nearest to it) so that viewers culling
+/// back faces show the side the robot saw; fine triangles with their own
+/// vertices (three per triangle), uncoloured; the path.
+MapModel buildMapModel(const em::PlanarMap& map, const std::vector<Eigen::Vector3d>& points,
+                       const std::vector<Eigen::Vector3d>& path);
+
 /// (s, t) texture coordinates of the four corners, in corner order.
+
 inline std::array<Eigen::Vector2f, 4> quadTexCoords() {
   return {Eigen::Vector2f(0, 0), Eigen::Vector2f(1, 0), Eigen::Vector2f(1, 1),
           Eigen::Vector2f(0, 1)};

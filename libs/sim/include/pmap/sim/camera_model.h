@@ -7,9 +7,12 @@
 //   look right:    yaw 180, pitch 0, roll -90   (optical axis = robot -Y)
 //   look backward: yaw  90, pitch 0, roll -90
 // Pixel centres are at integer coordinates; (cx, cy) = ((W-1)/2, (H-1)/2).
+// projectPoint() and pixelRay() are the ideal pinhole; lens distortion, if
+// any, is applied to the rendered image (lens_distortion.h).
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <optional>
 
 #include "pmap/sim/pose.h"
@@ -24,8 +27,11 @@ struct PinholeIntrinsics {
   double fy = 320.0;
   double cx = 319.5;
   double cy = 239.5;
+  /// k1, k2, p1, p2, k3 (MRPT TCamera::dist order); zeros = no distortion.
+  std::array<double, 5> distortion{{0.0, 0.0, 0.0, 0.0, 0.0}};
 
-  /// Square pixels, principal point at the image centre, horizontal FOV in radians.
+  /// Square pixels, principal point at the image centre, horizontal FOV in
+  /// radians, no distortion.
   static PinholeIntrinsics fromFov(int width_px, int height_px, double hfov_rad);
 };
 

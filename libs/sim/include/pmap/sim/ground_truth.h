@@ -1,5 +1,6 @@
 // Collects the ground truth of a run (true poses at every observation
-// timestamp, the id hit by every true structure-laser ray) and writes
+// timestamp, the id hit by every true structure-laser ray, the imperfections
+// and sharpness of every camera image) and writes
 // PREFIX.gt.json ("pmap-gt/1", doc/ground-truth.md) and PREFIX.poses.txt
 // (the mapper's poses.txt format: "timestamp x y z yaw pitch roll").
 #pragma once
@@ -9,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "pmap/sim/frame_imaging.h"
 #include "pmap/sim/ground_truth_json.h"
 #include "pmap/sim/pose.h"
 
@@ -37,9 +39,12 @@ class GroundTruthRecorder {
   void addPose(double t_s, const Pose2D& pose);
   /// One entry per structure (vertical laser) observation, in file order.
   void addStructureScan(double t_s, const std::string& label, const std::vector<int>& hits);
+  /// One entry per camera image, in file order.
+  void addImage(const ImageRecord& record);
 
   std::size_t poseCount() const { return poses_.size(); }
   std::size_t structureScanCount() const { return scans_.size(); }
+  std::size_t imageCount() const { return images_.size(); }
 
   OrderedJson toJson(const World& world, const GroundTruthMeta& meta) const;
   /// The poses.txt text: a '#' header line, then one pose per line.
@@ -61,6 +66,7 @@ class GroundTruthRecorder {
   };
   std::vector<TimedPose> poses_;
   std::vector<StructureScan> scans_;
+  std::vector<ImageRecord> images_;
 };
 
 }  // namespace pmap::sim

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "pmap/sim/camera_model.h"
+#include "pmap/sim/frame_imaging.h"
 #include "pmap/sim/world.h"
 
 namespace pmap::sim {
@@ -32,9 +33,14 @@ struct OdometryTruth {
 OrderedJson sensorsJson(const World& world, const PinholeIntrinsics& intrinsics,
                         bool cameras_enabled, const OdometryTruth& odometry);
 
-/// The effective path and noise options of the run (the world file's values
-/// after defaults and command-line overrides).
+/// The effective path, noise and camera imaging options of the run (the world
+/// file's values after defaults and command-line overrides).
 OrderedJson configJson(const World& world);
+
+/// One camera image: file (in the images directory), image (relative to the
+/// gt.json's directory), timestamp, label, index, its exposure, blur and
+/// measured sharpness.
+OrderedJson imageJson(const ImageRecord& record, const std::string& images_dir_name);
 
 /// Writes `doc` with the top-level keys one per line and, for arrays of
 /// records, one record per line.

@@ -35,7 +35,9 @@ mrpt::obs::CActionCollection::Ptr makeOdometryAction(const Pose2D& increment,
                                                      mrpt::Clock::time_point stamp);
 
 /// An image observation whose pixels live in an external file `file_name`
-/// (relative to the rawlog's "<name>_Images" directory).
+/// (relative to the rawlog's "<name>_Images" directory). A non-zero
+/// k.distortion is written as MRPT's plumb_bob model (cameraParams.dist =
+/// k1 k2 p1 p2 k3), else the model is `none` with zero coefficients.
 mrpt::obs::CObservationImage::Ptr makeImageObservation(const std::string& label,
                                                        const PinholeIntrinsics& k,
                                                        const Pose6D& camera_pose_on_robot,

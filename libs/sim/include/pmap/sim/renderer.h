@@ -2,8 +2,11 @@
 // clipped to the near plane and projected to find its pixel bounding box; each
 // pixel ray in that box is intersected with the rectangle's plane (holes and
 // posters respected) and kept if nearer than the z-buffer. Cylinders and boxes
-// are ray-cast the same way over their projected bounding box. Shading: a
-// headlight term |n . ray| plus ambient. Output is BGR floats before noise.
+// are ray-cast the same way over their projected bounding box. Poster pixels
+// average 2 x 2 samples over the pixel's area (posters carry pixel-scale
+// detail); everything else is sampled at the pixel centre. Shading: a
+// headlight term |n . ray| plus ambient. Output is BGR floats: the ideal
+// optical image, before lens, blur, exposure and noise (frame_imaging.h).
 #pragma once
 
 #include <cstdint>
@@ -28,6 +31,8 @@ class Renderer {
  private:
   struct Frame;
   void drawSurface(const Surface& s, Frame& f) const;
+  /// True if p_world lies on one of the surface's posters or within margin_m of it.
+  bool nearPoster(const Surface& s, const Eigen::Vector3d& p_world, double margin_m) const;
   void drawClutter(const Clutter& c, Frame& f) const;
   Eigen::Vector3f surfaceColour(const Surface& s, const Eigen::Vector3d& p_world,
                                 const Eigen::Vector2d& local) const;
@@ -36,8 +41,5 @@ class Renderer {
   const std::vector<cv::Mat>& posters_;
   std::uint32_t texture_seed_;
 };
-
-/// Adds N(0, sigma^2) noise per channel and quantises to CV_8UC3.
-cv::Mat finishImage(const cv::Mat& bgr_float, double sigma, std::uint64_t seed);
 
 }  // namespace pmap::sim

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "pmap/sim/camera_imaging_options.h"
+
 namespace pmap::sim {
 
 /// A 2D laser scanner (MRPT CObservation2DRangeScan, rightToLeft = true).
@@ -28,7 +30,8 @@ struct CameraMount {
   std::string look = "left";  ///< "left", "right", "forward" or "backward" (optical axis)
 };
 
-/// Pinhole cameras rendering the textured world (MRPT CObservationImage).
+/// Pinhole cameras rendering the textured world (MRPT CObservationImage), with
+/// the lens, blur, exposure and noise of real cameras (camera_imaging_options.h).
 struct CameraOptions {
   bool enabled = true;
   double rate_hz = 2.0;         ///< images per second per camera
@@ -38,6 +41,10 @@ struct CameraOptions {
   double hfov_deg = 90.0;  ///< horizontal field of view, degrees
   int jpeg_quality = 90;   ///< 1..100
   std::vector<CameraMount> mounts;
+  CameraLensOptions lens;
+  CameraBlurOptions blur;
+  CameraExposureOptions exposure;
+  CameraNoiseOptions noise;
   bool validate(std::string* why) const;
 };
 
@@ -53,7 +60,7 @@ struct SensorOptions {
   bool validate(std::string* why) const;
 };
 
-/// Noise of every simulated measurement.
+/// Noise of the lasers and the odometry (image noise: CameraOptions::noise).
 struct NoiseOptions {
   double range_sigma_m = 0.02;                    ///< Gaussian range noise, both lasers, metres
   double odometry_scale_error = 0.02;             ///< systematic distance scale error (fraction)
@@ -61,7 +68,6 @@ struct NoiseOptions {
   bool odometry_random_signs = true;              ///< signs of the two drifts drawn from the seed
   double odometry_sigma_xy_m = 0.002;             ///< white noise per cycle, metres
   double odometry_sigma_yaw_deg = 0.05;           ///< white noise per cycle, degrees
-  double image_sigma = 2.0;                       ///< pixel noise, grey levels (0..255)
   bool validate(std::string* why) const;
 };
 

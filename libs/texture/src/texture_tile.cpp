@@ -1,0 +1,75 @@
+#include "pmap/texture/texture_tile.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pmap::texture {
+
+products::TexturedQuad TextureTile::quad() const {
+  products::TexturedQuad q;
+  q.surface_id = surface_id;
+  q.tile = tile;
+  q.corners = {origin, origin + length_u * u, origin + length_u * u + length_v * v,
+               origin + length_v * v};
+  q.normal = normal;
+  return q;
+}
+
+namespace {
+
+int texels(double length_m, double pixels_per_m) {
+  return std::max(1, static_cast<int>(std::ceil(length_m * pixels_per_m - 1e-9)));
+}
+
+// Cuts one quad into pieces along u and v of at most max_side texels.
+void cutQuad(const products::TexturedQuad& q, double ppm, int max_side,
+             std::vector<TextureTile>& out) {
+  const Eigen::Vector3d eu = q.corners[1] - q.corners[0];
+  const Eigen::Vector3d ev = q.corners[3] - q.corners[0];
+  const double lu = eu.norm();
+  const double lv = ev.norm();
+  if (!(lu > 0) || !(lv > 0)) {
+    return;
+  }
+  const int nu = (texels(lu, ppm) + max_side - 1) / max_side;
+  const int nv = (texels(lv, ppm) + max_side - 1) / max_side;
+  for (int j = 0; j < nv; ++j) {
+    for (int i = 0; i < nu; ++i) {
+      TextureTile t;
+      t.surface_id = q.surface_id;
+      t.tile = j * nu + i;
+
+      t.u = eu / lu;
+      t.v = ev / lv;
+      t.normal = q.normal;
+      t.length_u = lu / nu;
+      t.length_v = lv / nv;
+      t.origin = q.corners[0] + (i * t.length_u) * t.u + (j * t.length_v) * t.v;
+      t.width = std::min(max_side, texels(t.length_u, ppm));
+      t.height = std::min(max_side, texels(t.length_v, ppm));
+      out.push_back(t);
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<TextureTile> planTiles(const std::vector<products::TexturedQuad>& quads,
+                                   const TextureOptions& options) {
+  double area = 0;
+  for (const auto& q : quads) {
+    area += (q.corners[1] - q.corners[0]).norm() * (q.corners[3] - q.corners[0]).norm();
+  }
+  double ppm = options.pixels_per_m;
+  const double budget = options.max_total_mpx * 1e6;
+  if (area * ppm * ppm > budget) {
+    ppm = std::sqrt(budget / area);
+  }
+  std::vector<TextureTile> tiles;
+  for (const auto& q : quads) {
+    cutQuad(q, ppm, options.max_side_px, tiles);
+  }
+  return tiles;
+}
+
+}  // namespace pmap::texture
