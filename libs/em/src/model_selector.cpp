@@ -457,6 +457,12 @@ int ModelSelector::prune(std::vector<Surface>& surfaces) {
   return removeSurfaces(surfaces, resp);
 }
 
+int ModelSelector::fuse(std::vector<Surface>& surfaces, std::int32_t& next_id) {
+  Responsibilities resp;
+  expect(surfaces, resp);
+  return fuseSurfaces(surfaces, resp, next_id);
+}
+
 // Tabu (against model-selection cycles): a surface removed in one of the
 // last kTabuRounds rounds may not be created again by a split or a seed; a
 // split that the next round's removal undoes would otherwise repeat forever.

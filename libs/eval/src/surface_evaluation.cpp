@@ -1,6 +1,7 @@
 #include "pmap/eval/surface_evaluation.h"
 
 #include <algorithm>
+#include <cmath>
 #include <unordered_set>
 
 #include "pmap/common/error.h"
@@ -11,8 +12,13 @@
 namespace pmap::eval {
 namespace {
 
+// How far a clipped reference edge may lie from a shared edge and still be
+// closed to it (the refinement's default seam_distance_m).
+constexpr double kSeamReachM = 0.3;
+
 SurfaceScore scoreSurface(const ReferenceSurface& ref, const MapSurface& map,
-                          const MapSurfaceMatch& match, std::size_t matching) {
+                          const MapSurfaceMatch& match, std::size_t matching,
+                          const std::vector<GtSeam>& seams) {
   SurfaceScore s;
   s.gt_id = ref.rect.id;
   s.kind = ref.rect.kind;
@@ -23,6 +29,8 @@ SurfaceScore scoreSurface(const ReferenceSurface& ref, const MapSurface& map,
   s.normal_error_deg = normalAngleDeg(map.normal, ref.rect.normal);
   s.offset_error_m = planeDistance(map.normal, map.offset_m, rectangleCentre(ref.clipped));
   s.corner_error_m = cornerError(map.corners, ref.clipped);
+  s.corner_error_closed_m =
+      cornerError(map.corners, closedReference(ref.rect, ref.clipped, seams, kSeamReachM));
   return s;
 }
 
@@ -32,6 +40,7 @@ void addScore(const SurfaceScore& s, SurfaceEvaluation& e) {
   e.normal_error_deg.add(s.normal_error_deg);
   e.offset_error_m.add(s.offset_error_m);
   e.corner_error_m.add(s.corner_error_m);
+  e.corner_error_closed_m.add(s.corner_error_closed_m);
   e.per_surface.push_back(s);
 }
 
@@ -81,6 +90,12 @@ SurfaceEvaluation evaluateSurfaces(const GroundTruth& gt, const MapPoints& point
   e.gt_surfaces = refs.size();
   e.map_surfaces_unmatched = surfaces.size() - matches.gt_of_map.size();
   std::unordered_set<int> eligible;
+  std::vector<std::pair<int, MapSurface>> primaries;
+  std::vector<int> eligible_ids;
+  for (const auto& ref : refs) {
+    eligible_ids.push_back(ref.rect.id);
+  }
+  const std::vector<GtSeam> seams = groundTruthSeams(gt, eligible_ids);
   for (const auto& ref : refs) {
     eligible.insert(ref.rect.id);
     ++e.matched_by_kind[ref.rect.kind].gt;
@@ -90,8 +105,14 @@ SurfaceEvaluation evaluateSurfaces(const GroundTruth& gt, const MapPoints& point
       continue;
     }
     const std::size_t primary = it->second.front();
-    addScore(scoreSurface(ref, moved[primary], matches.map_surfaces[primary], it->second.size()),
-             e);
+    primaries.emplace_back(ref.rect.id, moved[primary]);
+    addScore(
+        scoreSurface(ref, moved[primary], matches.map_surfaces[primary], it->second.size(), seams),
+        e);
+  }
+  e.seams = seamSides(gt, primaries);
+  for (const SeamSide& side : e.seams) {
+    e.seam_gap_m.add(std::abs(side.gap_m));
   }
   e.labels = labelMetrics(gt, points.surface, labels, matches, eligible);
   return e;

@@ -25,7 +25,20 @@ json perSurfaceJson(const std::vector<SurfaceScore>& scores) {
                     {"points", s.points},
                     {"normal_error_deg", s.normal_error_deg},
                     {"offset_error_m", s.offset_error_m},
-                    {"corner_error_m", s.corner_error_m}});
+                    {"corner_error_m", s.corner_error_m},
+                    {"corner_error_closed_m", s.corner_error_closed_m}});
+  }
+  return list;
+}
+
+json perSeamJson(const std::vector<SeamSide>& seams) {
+  json list = json::array();
+  for (const auto& s : seams) {
+    list.push_back({{"gt_id", s.gt_id},
+                    {"gt_other", s.gt_other},
+                    {"map_id", s.map_id},
+                    {"map_other", s.map_other},
+                    {"gap_m", s.gap_m}});
   }
   return list;
 }
@@ -69,7 +82,11 @@ void addSurfaceKeys(const SurfaceEvaluation& e, const SurfaceEvalOptions& option
   doc["normal_error_deg"] = summaryJson(e.normal_error_deg);
   doc["offset_error_m"] = summaryJson(e.offset_error_m);
   doc["corner_error_m"] = summaryJson(e.corner_error_m);
+  doc["corner_error_closed_m"] = summaryJson(e.corner_error_closed_m);
   doc["per_surface"] = perSurfaceJson(e.per_surface);
+  doc["seam_gap_m"] = summaryJson(e.seam_gap_m);
+  doc["seam_sides"] = e.seams.size();
+  doc["per_seam"] = perSeamJson(e.seams);
   doc["label_recall"] = optionalJson(l.recall);
   doc["label_precision"] = optionalJson(l.precision);
   doc["label_f1"] = optionalJson(l.f1);
@@ -102,6 +119,16 @@ std::string surfaceReportText(const json& doc) {
       fmt(doc["offset_error_m"]["mean"]).c_str(), fmt(doc["offset_error_m"]["max"]).c_str(),
       fmt(doc["corner_error_m"]["mean"]).c_str(), fmt(doc["corner_error_m"]["max"]).c_str());
   text += buf;
+  if (doc.contains("seam_gap_m")) {
+    std::snprintf(buf, sizeof buf,
+                  "seam gaps mean/max: %s/%s m over %zu seam sides; corner (closed reference) "
+                  "%s/%s m\n",
+                  fmt(doc["seam_gap_m"]["mean"]).c_str(), fmt(doc["seam_gap_m"]["max"]).c_str(),
+                  doc["seam_sides"].get<std::size_t>(),
+                  fmt(doc["corner_error_closed_m"]["mean"]).c_str(),
+                  fmt(doc["corner_error_closed_m"]["max"]).c_str());
+    text += buf;
+  }
   std::snprintf(buf, sizeof buf, "labels: recall %s, precision %s, F1 %s\n",
                 fmt(doc["label_recall"]).c_str(), fmt(doc["label_precision"]).c_str(),
                 fmt(doc["label_f1"]).c_str());

@@ -88,6 +88,11 @@ std::optional<MapperArgs> parseMapperArgs(int argc, const char* const* argv) {
                                     "map the complete records of a truncated rawlog", cmd);
   TCLAP::SwitchArg no_textures(
       "", "no-textures", "geometry only: no camera textures (as [Texture] enabled = false)", cmd);
+  TCLAP::SwitchArg no_refine(
+      "", "no-refine",
+      "write the EM's map without fusion and boundary refinement (as [Refinement] enabled = "
+      "false)",
+      cmd);
   TCLAP::SwitchArg gui("", "gui",
                        "show the growing map, the current scans and the robot in a 3D window "
                        "while mapping (MRPT display window, as icp-slam)",
@@ -126,6 +131,7 @@ std::optional<MapperArgs> parseMapperArgs(int argc, const char* const* argv) {
   a.accept_truncated = accept_truncated.getValue();
   a.quiet = quiet.getValue();
   a.no_textures = no_textures.getValue();
+  a.no_refine = no_refine.getValue();
   a.gui = gui.getValue();
   a.gui_hold_s = gui_hold.getValue();
   if (gui_hold.isSet() && (!a.gui || !(a.gui_hold_s >= 0.0 && a.gui_hold_s <= 86400.0))) {

@@ -10,8 +10,8 @@ namespace pmap::mapper {
 namespace {
 
 const std::vector<std::string>& projectSections() {
-  static const std::vector<std::string> s = {"Sensors", "Output", "PlanarEM", "OnlineEM",
-                                             "Texture"};
+  static const std::vector<std::string> s = {"Sensors",  "Output",  "PlanarEM",
+                                             "OnlineEM", "Texture", "Refinement"};
   return s;
 }
 
@@ -121,6 +121,27 @@ void TextureSection::load(config::SectionReader& r) {
   r.read("threads", t.threads);
 }
 
+void RefinementSection::load(config::SectionReader& r) {
+  refine::RefineOptions& o = refine;
+  r.read("enabled", o.enabled);
+  r.read("fuse", o.fuse);
+  r.read("fuse_sigmas", o.fuse_sigmas);
+  r.read("seam_distance_m", o.seam_distance_m);
+  r.read("seam_min_length_m", o.seam_min_length_m);
+  r.read("seam_min_angle_deg", o.seam_min_angle_deg);
+  r.read("seam_max_edge_angle_deg", o.seam_max_edge_angle_deg);
+  r.read("seam_sigma_m", o.seam_sigma_m);
+  r.read("extent_sigma_m", o.extent_sigma_m);
+  r.read("rotation_sigma_deg", o.rotation_sigma_deg);
+  r.read("robust_loss_sigmas", o.robust_loss_sigmas);
+  r.read("max_points_per_surface", o.max_points_per_surface);
+  r.read("max_iterations", o.max_iterations);
+  r.read("manhattan", o.manhattan);
+  r.read("manhattan_tolerance_deg", o.manhattan_tolerance_deg);
+  r.read("manhattan_sigma_deg", o.manhattan_sigma_deg);
+  r.read("max_normal_change_deg", o.max_normal_change_deg);
+}
+
 bool PlanarEmSection::validate(std::string* why) const {
   if (!(cloud_neighbour_radius_m > 0.0)) {
     *why = "cloud_neighbour_radius_m must be > 0";
@@ -136,6 +157,7 @@ MapperConfig loadMapperConfig(const std::filesystem::path& path) {
                    {},
                    {},
                    {},
+                   {},
                    {}};
   rejectUnknownSections(cfg.doc);
   config::loadOptions(cfg.doc, "Sensors", cfg.sensors, cfg.effective.get());
@@ -147,6 +169,9 @@ MapperConfig loadMapperConfig(const std::filesystem::path& path) {
   TextureSection texture;
   config::loadOptions(cfg.doc, "Texture", texture, cfg.effective.get());
   cfg.texture = texture.texture;
+  RefinementSection refinement;
+  config::loadOptions(cfg.doc, "Refinement", refinement, cfg.effective.get());
+  cfg.refine = refinement.refine;
   return cfg;
 }
 

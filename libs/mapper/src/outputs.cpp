@@ -102,6 +102,31 @@ void writeOnlineCsv(const fs::path& path, const MappingResult& r) {
   });
 }
 
+json refinementJson(const refine::RefineResult& r, const std::vector<em::Surface>& surfaces) {
+  const refine::BoundaryResult& b = r.boundaries;
+  json seams = json::array();
+  for (const refine::Seam& s : b.seams) {
+    seams.push_back({{"surface", surfaces[s.surface].id},
+                     {"edge", s.edge},
+                     {"other", surfaces[s.other].id},
+                     {"distance_before_m", s.distance_m}});
+  }
+  return {{"ran", r.ran},
+          {"message", r.message},
+          {"fused_pairs", r.fusion.changed_pairs},
+          {"fused_replaced_ids", r.fusion.replaced_ids},
+          {"fused_new_ids", r.fusion.new_ids},
+          {"seams", seams},
+          {"manhattan_pairs", b.manhattan_pairs},
+          {"termination", b.termination},
+          {"iterations", b.iterations},
+          {"initial_cost", b.initial_cost},
+          {"final_cost", b.final_cost},
+          {"reverted_ids", b.reverted_ids},
+          {"fusion_s", r.fusion_s},
+          {"solve_s", r.solve_s}};
+}
+
 void addPlanarMap(const MappingResult& r, json& s) {
   const em::EmResult& em = *r.em;
   const std::size_t map_triangles = 2 * em.map.surfaces.size() + em.map.fine_triangles.size();
@@ -120,10 +145,14 @@ void addPlanarMap(const MappingResult& r, json& s) {
   if (!r.online.empty()) {
     addOnline(r, s);
   }
+  if (r.refine) {
+    s["refinement"] = refinementJson(*r.refine, em.map.surfaces);
+  }
 }
 
 json summaryJson(const MapperArgs& args, const MappingResult& r, double write_s, double total_s) {
-  const double processing_s = r.timing.read_s + r.timing.pose_s + r.timing.map_s + r.timing.em_s;
+  const double processing_s =
+      r.timing.read_s + r.timing.pose_s + r.timing.map_s + r.timing.em_s + r.timing.refine_s;
   json s;
   s["input"] = inputSummary(args, r);
   s["scans"] = r.placement.placed;
@@ -141,8 +170,10 @@ json summaryJson(const MapperArgs& args, const MappingResult& r, double write_s,
                 {"odometry_readings", r.pose_stats.odometry_readings},
                 {"non_monotonic", r.pose_stats.non_monotonic}};
   s["duration_s"] = r.duration();
-  s["timing_s"] = {{"total", total_s},      {"read", r.timing.read_s}, {"pose", r.timing.pose_s},
-                   {"map", r.timing.map_s}, {"em", r.timing.em_s},     {"write", write_s}};
+  s["timing_s"] = {{"total", total_s},           {"read", r.timing.read_s},
+                   {"pose", r.timing.pose_s},    {"map", r.timing.map_s},
+                   {"em", r.timing.em_s},        {"write", write_s},
+                   {"refine", r.timing.refine_s}};
   s["mode"] = r.em_mode.empty() ? args.mode : r.em_mode;
   s["pose_per_scan_ms"] = percentiles(r.pose_step_ms);
   if (r.em) {

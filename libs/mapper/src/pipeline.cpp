@@ -231,13 +231,28 @@ MappingResult runCloud(const MapperArgs& args) {
   return result;
 }
 
-void runEm(const MapperConfig& config, MappingResult& result) {
+points::NeighbourGraph graphOf(const MapperConfig& config, const MappingResult& result) {
+  return points::neighbourGraph(result.map, config.planar_em.cloud_neighbour_radius_m);
+}
+
+void runEm(const MapperConfig& config, const points::NeighbourGraph& graph, MappingResult& result) {
   const auto t0 = Clock::now();
-  const points::NeighbourGraph graph =
-      points::neighbourGraph(result.map, config.planar_em.cloud_neighbour_radius_m);
   result.em =
       em::OfflineEm(config.planar_em.em).run(result.map.xyz(), graph.neighbours, graph.rows);
-  result.timing.em_s = since(t0);
+  result.timing.em_s += since(t0);
+}
+
+// Fusion and the Ceres refinement of the EM's map (offline or online).
+void runRefinement(const MapperConfig& config, const points::NeighbourGraph& graph,
+                   MappingResult& result) {
+  const auto t0 = Clock::now();
+  result.refine = refine::refineMap(result.map.xyz(), graph.neighbours, graph.rows,
+                                    config.planar_em.em, config.refine, result.em->map);
+  if (result.refine->fusion.changed_pairs > 0) {
+    result.em->message +=
+        "; refinement fused " + std::to_string(result.refine->fusion.changed_pairs) + " pairs";
+  }
+  result.timing.refine_s += since(t0);
 }
 
 }  // namespace
@@ -250,11 +265,23 @@ MappingResult runPipeline(const MapperConfig& config, const MapperArgs& args, Li
     RawlogRun(config, args, result, live).run();
   }
   const bool online_done = result.em_mode == "online";
+  std::optional<points::NeighbourGraph> graph;
   if (!args.poses_only && (args.mode == "offline" || (args.mode == "online" && !online_done))) {
     result.em_mode = "offline";  // online falls back for unorganised clouds
-    runEm(config, result);
+    const auto t0 = Clock::now();
+    graph = graphOf(config, result);
+    result.timing.em_s = since(t0);
+    runEm(config, *graph, result);
   } else if (args.mode == "raw" || args.poses_only) {
     result.em_mode = args.poses_only ? "poses-only" : "raw";
+  }
+  if (result.em && config.refine.enabled && !args.no_refine) {
+    const auto t0 = Clock::now();
+    if (!graph) {
+      graph = graphOf(config, result);
+    }
+    result.timing.refine_s = since(t0);
+    runRefinement(config, *graph, result);
   }
   return result;
 }

@@ -40,6 +40,11 @@ class ModelSelector {
   /// posterior (the removal step of a round alone); returns how many.
   int prune(std::vector<Surface>& surfaces);
 
+  /// The fusion step of a round alone (E-step, then fuse or re-cut pairs of
+  /// coplanar neighbours when that raises the log posterior); returns how
+  /// many pairs changed.
+  int fuse(std::vector<Surface>& surfaces, std::int32_t& next_id);
+
   /// E-step on `surfaces` with this selector's index settings.
   void expect(const std::vector<Surface>& surfaces, Responsibilities& resp) const;
 

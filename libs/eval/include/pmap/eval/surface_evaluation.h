@@ -13,6 +13,7 @@
 #include "pmap/eval/label_metrics.h"
 #include "pmap/eval/map_files.h"
 #include "pmap/eval/pose_metrics.h"
+#include "pmap/eval/seam_gaps.h"
 #include "pmap/eval/surface_files.h"
 #include "pmap/eval/surface_matching.h"
 
@@ -47,6 +48,7 @@ struct SurfaceScore {
   double normal_error_deg = 0;            ///< sign-agnostic angle between the normals
   double offset_error_m = 0;              ///< clipped reference centre to the map plane
   double corner_error_m = 0;              ///< cornerError(map rectangle, clipped reference)
+  double corner_error_closed_m = 0;       ///< ... reference closed to its seams (seam_gaps.h)
 };
 
 struct UnmatchedSurface {
@@ -71,6 +73,10 @@ struct SurfaceEvaluation {
   ErrorSummary normal_error_deg;
   ErrorSummary offset_error_m;
   ErrorSummary corner_error_m;
+  ErrorSummary corner_error_closed_m;
+  /// Seams between matched eligible surfaces (seam_gaps.h) and |gap_m| over them.
+  std::vector<SeamSide> seams;
+  ErrorSummary seam_gap_m;
   LabelMetrics labels;
 };
 

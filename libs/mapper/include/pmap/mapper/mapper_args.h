@@ -26,6 +26,7 @@ struct MapperArgs {
   bool accept_truncated = false;
   bool quiet = false;        ///< no progress line
   bool no_textures = false;  ///< geometry only
+  bool no_refine = false;    ///< the EM's map as it is (as [Refinement] enabled = false)
   bool gui = false;          ///< live 3D window
   double gui_hold_s = -1.0;  ///< --gui: final map shown this long (< 0: until closed)
 

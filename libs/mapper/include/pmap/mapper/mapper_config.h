@@ -14,6 +14,7 @@
 #include "pmap/em/planar_em_options.h"
 #include "pmap/input/sensor_roles.h"
 #include "pmap/points/raw_mesh.h"
+#include "pmap/refine/refine_options.h"
 #include "pmap/texture/texture_options.h"
 
 namespace pmap::config {
@@ -54,6 +55,14 @@ struct OnlineEmSection {
   bool validate(std::string* why) const { return online.validate(why); }
 };
 
+/// [Refinement]: fusion and the Ceres boundary refinement (libs/refine,
+/// doc/refinement.md).
+struct RefinementSection {
+  refine::RefineOptions refine;
+  void load(config::SectionReader& reader);
+  bool validate(std::string* why) const { return refine.validate(why); }
+};
+
 struct MapperConfig {
   config::IniDocument doc;
   std::shared_ptr<config::EffectiveConfig> effective;
@@ -62,6 +71,7 @@ struct MapperConfig {
   PlanarEmSection planar_em;
   em::OnlineEmOptions online_em;
   texture::TextureOptions texture;
+  refine::RefineOptions refine;
 };
 
 /// Loads and validates the project's sections; rejects sections nobody owns.

@@ -24,14 +24,16 @@
 #include "pmap/points/scan_placer.h"
 #include "pmap/poses/icp_pose_tracker.h"
 #include "pmap/poses/trajectory.h"
+#include "pmap/refine/map_refiner.h"
 
 namespace pmap::mapper {
 
 struct StageTiming {
-  double read_s = 0;  ///< decoding the rawlog
-  double pose_s = 0;  ///< ICP and pose handling
-  double map_s = 0;   ///< extracting, placing and meshing points
-  double em_s = 0;    ///< the EM planar mapper
+  double read_s = 0;    ///< decoding the rawlog
+  double pose_s = 0;    ///< ICP and pose handling
+  double map_s = 0;     ///< extracting, placing and meshing points
+  double em_s = 0;      ///< the EM planar mapper
+  double refine_s = 0;  ///< fusion and the Ceres refinement (doc/refinement.md)
 };
 
 struct MappingResult {
@@ -49,6 +51,8 @@ struct MappingResult {
   StageTiming timing;
   std::string truncation;          ///< non-empty: accepted truncation message
   std::optional<em::EmResult> em;  ///< the planar map (modes online and offline)
+  /// The refinement of em's map (already applied to it).
+  std::optional<refine::RefineResult> refine;
   /// Online mode: one record per structure scan fed to the online EM.
   std::vector<OnlineRecord> online;
   /// Wall time of the pose stage for each input step that carried pose
