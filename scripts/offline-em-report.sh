@@ -4,6 +4,8 @@
 # by map-eval; and its speed on the default world driven there and back
 # (config/worlds/default-return.json, ~196,000 points), median of RUNS runs
 # on one thread.   Usage: scripts/offline-em-report.sh [BUILD_DIR] [RUNS]
+# The EM alone (--no-refine): the refinement after it is measured by
+# scripts/refinement-report.sh (doc/refinement-results.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/report-lib.sh
@@ -21,7 +23,7 @@ accuracy_row() {  # NAME PREFIX CONFIG POSES(true|icp)
   local name=$1 p=$2 cfg=$3 poses=$4 out="$work/map-$1"
   local extra=()
   [ "$poses" = true ] && extra=(--poses "$p.poses.txt")
-  "$bin/planar-mapper" --config "$cfg" --rawlog "$p.rawlog" "${extra[@]}" --mode offline \
+  "$bin/planar-mapper" --no-refine --config "$cfg" --rawlog "$p.rawlog" "${extra[@]}" --mode offline \
     --out "$out" -q
   "$bin/map-eval" --map "$out" --gt "$p.gt.json" --out "$out/eval.json" -q
   local e="$out/eval.json" s="$out/summary.json"
@@ -40,7 +42,7 @@ accuracy_row "sigma 5 cm, ICP poses" "$work/s5" config/sigma5.ini icp
 
 times=()
 for r in $(seq "$runs"); do
-  "$bin/planar-mapper" --rawlog "$work/ret.rawlog" --poses "$work/ret.poses.txt" --mode offline \
+  "$bin/planar-mapper" --no-refine --rawlog "$work/ret.rawlog" --poses "$work/ret.poses.txt" --mode offline \
     --out "$work/bench" -q
   times+=("$(json "$work/bench/summary.json" "d['timing_s']['em']")")
 done
@@ -48,7 +50,7 @@ median=$(printf '%s\n' "${times[@]}" | sort -g | awk '{a[NR]=$1} END {print a[in
 b="$work/bench/summary.json"
 
 # Real data: MRPT's Kinect frame.
-"$bin/planar-mapper" --config config/mrpt-rgbd.ini --rawlog /usr/share/mrpt/datasets/tests_rgbd.rawlog \
+"$bin/planar-mapper" --no-refine --config config/mrpt-rgbd.ini --rawlog /usr/share/mrpt/datasets/tests_rgbd.rawlog \
   --mode offline --out "$work/rgbd" -q
 k="$work/rgbd/summary.json"
 rgbd_rows=$(python3 - "$work/rgbd/surfaces.csv" <<'PY'

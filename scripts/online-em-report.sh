@@ -4,6 +4,8 @@
 # long world (>= 400 m of new corridor, ~5,800 structure scans) for constant
 # cost per scan, with a plot. Medians over RUNS runs where a time is quoted.
 # Usage: scripts/online-em-report.sh [BUILD_DIR] [RUNS]
+# The EM alone (--no-refine): the refinement after it is measured by
+# scripts/refinement-report.sh (doc/refinement-results.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/report-lib.sh
@@ -19,14 +21,14 @@ compare_row() {  # NAME POSES(true|icp)
   local name=$1 poses=$2 extra=()
   [ "$poses" = true ] && extra=(--poses "$work/s2.poses.txt")
   for mode in offline online; do
-    "$bin/planar-mapper" --rawlog "$work/s2.rawlog" "${extra[@]}" --mode $mode \
+    "$bin/planar-mapper" --no-refine --rawlog "$work/s2.rawlog" "${extra[@]}" --mode $mode \
       --out "$work/$mode-$poses" -q
     "$bin/map-eval" --map "$work/$mode-$poses" --gt "$work/s2.gt.json" \
       --out "$work/$mode-$poses/eval.json" -q
   done
   local p50=() p99=() mx=() rtf=()
   for r in $(seq "$runs"); do
-    "$bin/planar-mapper" --rawlog "$work/s2.rawlog" "${extra[@]}" --mode online \
+    "$bin/planar-mapper" --no-refine --rawlog "$work/s2.rawlog" "${extra[@]}" --mode online \
       --out "$work/timing" -q
     p50+=("$(json "$work/timing/summary.json" "d['em_per_scan_ms']['p50']")")
     p99+=("$(json "$work/timing/summary.json" "d['em_per_scan_ms']['p99']")")
@@ -45,7 +47,7 @@ $(printf '%.0f' "$(median "${rtf[@]}")") |"$'\n'
 compare_row "true poses" true
 compare_row "ICP poses" icp
 
-"$bin/planar-mapper" --rawlog "$work/long.rawlog" --poses "$work/long.poses.txt" --mode online \
+"$bin/planar-mapper" --no-refine --rawlog "$work/long.rawlog" --poses "$work/long.poses.txt" --mode online \
   --out "$work/long-map" -q
 l="$work/long-map/summary.json"
 if /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then
