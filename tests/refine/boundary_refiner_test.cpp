@@ -116,6 +116,26 @@ TEST(RefineBoundaries, ManhattanPriorSnapsOnlyWithinItsTolerance) {
   }
 }
 
+TEST(RefineBoundaries, ConflictingSeamsGiveUpRatherThanTurnPlanes) {
+  // One straight wall edge under two ceiling pieces 6 cm apart in height: it
+  // cannot end on both; the planes must not tilt to pretend it does.
+  std::mt19937 rng(19);
+  testing::Scene scene;
+  const em::Rectangle wall = rectangle(Eigen::Vector3d::UnitY(), {4, 0, 1.3}, kX, 4.0, 1.3);
+  const em::Rectangle low = rectangle(-Eigen::Vector3d::UnitZ(), {2, 1, 2.70}, kX, 2.0, 0.95);
+  const em::Rectangle high = rectangle(-Eigen::Vector3d::UnitZ(), {6, 1, 2.76}, kX, 2.0, 0.95);
+  for (const em::Rectangle& r : {wall, low, high}) {
+    testing::appendSurface(r, r, 0.02, rng, scene);
+  }
+  const auto before = scene.surfaces;
+  const BoundaryResult r =
+      refineBoundaries(scene.points, scene.samples, 0.02, RefineOptions{}, scene.surfaces);
+  EXPECT_EQ(r.termination, "CONVERGENCE");
+  for (std::size_t j = 0; j < 3; ++j) {
+    EXPECT_LT(angleDeg(scene.surfaces[j].rect.normal, before[j].rect.normal), 0.1) << j;
+  }
+}
+
 TEST(RefineBoundaries, SameInputGivesTheSameSurfaces) {
   testing::Scene a = testing::wallUnderCeiling(0.02);
   testing::Scene b = testing::wallUnderCeiling(0.02);

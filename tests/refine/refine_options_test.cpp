@@ -24,6 +24,7 @@ TEST(RefineOptions, EachRuleNamesItsKey) {
       {[](RefineOptions& o) { o.seam_min_angle_deg = 90; }, "seam_min_angle_deg"},
       {[](RefineOptions& o) { o.seam_max_edge_angle_deg = 0; }, "seam_max_edge_angle_deg"},
       {[](RefineOptions& o) { o.seam_sigma_m = NAN; }, "seam_sigma_m"},
+      {[](RefineOptions& o) { o.seam_give_up_m = 0; }, "seam_give_up_m"},
       {[](RefineOptions& o) { o.extent_sigma_m = 0; }, "extent_sigma_m"},
       {[](RefineOptions& o) { o.rotation_sigma_deg = INFINITY; }, "rotation_sigma_deg"},
       {[](RefineOptions& o) { o.robust_loss_sigmas = 0; }, "robust_loss_sigmas"},

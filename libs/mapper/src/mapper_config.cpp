@@ -131,6 +131,7 @@ void RefinementSection::load(config::SectionReader& r) {
   r.read("seam_min_angle_deg", o.seam_min_angle_deg);
   r.read("seam_max_edge_angle_deg", o.seam_max_edge_angle_deg);
   r.read("seam_sigma_m", o.seam_sigma_m);
+  r.read("seam_give_up_m", o.seam_give_up_m);
   r.read("extent_sigma_m", o.extent_sigma_m);
   r.read("rotation_sigma_deg", o.rotation_sigma_deg);
   r.read("robust_loss_sigmas", o.robust_loss_sigmas);

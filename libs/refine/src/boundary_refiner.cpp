@@ -11,6 +11,7 @@ namespace pmap::refine {
 namespace {
 
 constexpr double kDegToRad = M_PI / 180.0;
+constexpr int kMaxPasses = 3;  ///< solves: the first, then with refused surfaces held
 
 class Problem {
  public:
@@ -61,8 +62,8 @@ class Problem {
     std::vector<SurfaceSample> near;
     for (const SurfaceSample& s : samples) {
       const Eigen::Vector3d d = points[static_cast<std::size_t>(s.point)] - r.centre;
-      if (s.member && std::abs(r.axis_u.dot(d)) > r.half_u - band ||
-          std::abs(r.axisV().dot(d)) > r.half_v - band) {
+      if (s.member && (std::abs(r.axis_u.dot(d)) > r.half_u - band ||
+                       std::abs(r.axisV().dot(d)) > r.half_v - band)) {
         near.push_back(s);
       }
     }
@@ -98,8 +99,11 @@ class Problem {
     SurfaceParams& b = params_[s.other];
     auto* cost = new ceres::AutoDiffCostFunction<EdgeOnPlane, 2, 3, 1, 1, 4, 3, 1>(
         new EdgeOnPlane(s.edge, s.along, a.ref_centre, a.ref_axis, options_.seam_sigma_m));
-    problem_.AddResidualBlock(cost, nullptr, a.normal.data(), &a.offset, &a.rotation,
-                              a.bounds.data(), b.normal.data(), &b.offset);
+    // Cauchy: a seam the data cannot close within about seam_give_up_m
+    // (a wrong one, between surfaces that do not meet) stops pulling.
+    auto* loss = new ceres::CauchyLoss(options_.seam_give_up_m / options_.seam_sigma_m);
+    problem_.AddResidualBlock(cost, loss, a.normal.data(), &a.offset, &a.rotation, a.bounds.data(),
+                              b.normal.data(), &b.offset);
   }
 
   // Manhattan prior between every pair within the tolerance of parallel or
@@ -170,6 +174,40 @@ bool acceptRefined(const em::Rectangle& before, const SurfaceParams& p, double m
          p.bounds[kVMax] > p.bounds[kVMin];
 }
 
+// One solve of all surfaces from `params` (in place); surfaces marked in
+// `held` keep their plane and rectangle. Records the seams' Manhattan pairs.
+ceres::Solver::Summary solveOnce(const std::vector<Eigen::Vector3d>& points,
+                                 const std::vector<std::vector<SurfaceSample>>& samples,
+                                 double sigma_m, const RefineOptions& options,
+                                 const std::vector<char>& held, BoundaryResult& result,
+                                 std::vector<SurfaceParams>& params) {
+  Problem problem(params, options);
+  for (std::size_t j = 0; j < params.size() && j < samples.size(); ++j) {
+    problem.addPlane(j, points, samples[j], sigma_m);
+    problem.addBoundary(j, points, samples[j], sigma_m);
+    problem.addExtentPrior(j);
+  }
+  std::vector<char> tied(params.size(), 0);
+  std::vector<char> has_seam_edge(params.size(), 0);
+  for (const Seam& s : result.seams) {
+    problem.addSeam(s);
+    tied[s.surface] = tied[s.other] = 1;
+    has_seam_edge[s.surface] = 1;
+  }
+  if (options.manhattan) {
+    result.manhattan_pairs = problem.addManhattan(tied);
+  }
+  for (std::size_t j = 0; j < params.size(); ++j) {
+    if (!tied[j] || held[j]) {
+      problem.holdPlane(j);
+    }
+    if (!has_seam_edge[j] || held[j]) {
+      problem.holdRectangle(j);
+    }
+  }
+  return problem.solve();
+}
+
 }  // namespace
 
 std::vector<std::vector<SurfaceSample>> samplesFromResponsibilities(
@@ -201,41 +239,40 @@ BoundaryResult refineBoundaries(const std::vector<Eigen::Vector3d>& points,
     result.termination = "nothing to refine";
     return result;
   }
-  Problem problem(params, options);
-  for (std::size_t j = 0; j < surfaces.size() && j < samples.size(); ++j) {
-    problem.addPlane(j, points, samples[j], sigma_m);
-    problem.addBoundary(j, points, samples[j], sigma_m);
-    problem.addExtentPrior(j);
-  }
-  std::vector<char> tied(surfaces.size(), 0);
-  std::vector<char> has_seam_edge(surfaces.size(), 0);
-  for (const Seam& s : result.seams) {
-    problem.addSeam(s);
-    tied[s.surface] = tied[s.other] = 1;
-    has_seam_edge[s.surface] = 1;
-  }
-  if (options.manhattan) {
-    result.manhattan_pairs = problem.addManhattan(tied);
-  }
-  for (std::size_t j = 0; j < surfaces.size(); ++j) {
-    if (!tied[j]) {
-      problem.holdPlane(j);
+  std::vector<char> held(surfaces.size(), 0);
+  std::vector<SurfaceParams> solved;
+  for (int pass = 0; pass < kMaxPasses; ++pass) {
+    solved = params;
+    const ceres::Solver::Summary summary =
+        solveOnce(points, samples, sigma_m, options, held, result, solved);
+    result.termination = ceres::TerminationTypeToString(summary.termination_type);
+    result.iterations += static_cast<int>(summary.iterations.size());
+    if (pass == 0) {
+      result.initial_cost = summary.initial_cost;
     }
-    if (!has_seam_edge[j]) {
-      problem.holdRectangle(j);
+    result.final_cost = summary.final_cost;
+    if (summary.termination_type == ceres::FAILURE) {
+      return result;
     }
-  }
-  const ceres::Solver::Summary summary = problem.solve();
-  result.termination = ceres::TerminationTypeToString(summary.termination_type);
-  result.iterations = static_cast<int>(summary.iterations.size());
-  result.initial_cost = summary.initial_cost;
-  result.final_cost = summary.final_cost;
-  if (summary.termination_type == ceres::FAILURE) {
-    return result;
+    // Surfaces the solve would turn too far or collapse keep the EM's
+    // geometry; solved again with them held, their neighbours adapt to it.
+    bool any = false;
+    for (std::size_t j = 0; j < surfaces.size(); ++j) {
+      em::Rectangle refined;
+      if (!held[j] &&
+          !acceptRefined(surfaces[j].rect, solved[j], options.max_normal_change_deg, refined)) {
+        held[j] = 1;
+        any = true;
+      }
+    }
+    if (!any) {
+      break;
+    }
   }
   for (std::size_t j = 0; j < surfaces.size(); ++j) {
     em::Rectangle refined;
-    if (acceptRefined(surfaces[j].rect, params[j], options.max_normal_change_deg, refined)) {
+    if (!held[j] &&
+        acceptRefined(surfaces[j].rect, solved[j], options.max_normal_change_deg, refined)) {
       surfaces[j].rect = refined;
     } else {
       result.reverted_ids.push_back(surfaces[j].id);

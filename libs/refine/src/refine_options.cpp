@@ -38,6 +38,8 @@ bool RefineOptions::validate(std::string* why) const {
   }
   if (!positive(seam_sigma_m))
     return fail(why, "seam_sigma_m must be > 0");
+  if (!positive(seam_give_up_m))
+    return fail(why, "seam_give_up_m must be > 0");
   if (!positive(extent_sigma_m))
     return fail(why, "extent_sigma_m must be > 0");
   if (!positive(rotation_sigma_deg))

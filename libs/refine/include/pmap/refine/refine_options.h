@@ -29,6 +29,10 @@ struct RefineOptions {
   /// How tightly an edge ends on its seam: residual scale of the corner's
   /// distance to the other plane (m), > 0.
   double seam_sigma_m = 0.002;
+  /// A seam's residual is quadratic up to about this distance and pulls
+  /// ever less beyond (Cauchy loss), so a seam between surfaces that do not
+  /// really meet gives up instead of turning their planes (m), > 0.
+  double seam_give_up_m = 0.02;
   /// Faithfulness to the points' extent: the scale of a rectangle bound's
   /// move from the EM's fit (m), > 0.
   double extent_sigma_m = 0.05;
