@@ -36,6 +36,7 @@ def stage_table(work, reps):
             poses, " | ".join("%.2f s (%.0f %%)" % (med[k], 100 * med[k] / med["total"]) if k != "total"
                               else "%.2f s" % med[k] for k in med), p50, p99))
         shares[poses] = med
+        med["em_p99"] = p99
     return "\n".join(rows), shares
 
 
@@ -60,7 +61,19 @@ def main():
     stages, shares = stage_table(work, reps)
     tpl = open(os.path.join(os.path.dirname(__file__), "performance_template.md")).read()
     t = shares["icp"]
+    e100, m100, fit = b["BM_EStep/100_median"], b["BM_MStep/100_median"], b["BM_RectangleFit/200_median"]
+    online = b["BM_OnlineUpdatePerScan/iterations:600_median"]
+    pairs_per_point = e100["pairs"] / e100["points"]
+    members = e100["points"] / 3  # three surfaces share the points
+    fit_us = ns_per_item(fit) * members / 1e3
+    m_us = ns_per_item(m100) / 1e3
     open(out, "w").write(tpl.format(
+        estep_ns="%.0f" % ns_per_item(e100), pairs_per_point="%.2f" % pairs_per_point,
+        scan_estep_us="%.0f" % (181 * pairs_per_point * ns_per_item(e100) / 1e3),
+        fit_ns="%.0f" % ns_per_item(fit), members="%.0f" % members, fit_us="%.0f" % fit_us,
+        mstep_us="%.0f" % m_us, fit_share="%.0f" % (100 * fit_us / m_us),
+        online_ms="%.2f" % (ns_per_item(online) / 1e6),
+        em_p99_ms="%.2f" % shares["true"]["em_p99"], write_share="%.0f" % (100 * t["write"] / t["total"]),
         date=date, commit=commit, nproc=nproc, cpu=cpu, reps=reps, bench="\n".join(lines),
         stages=stages, pose_share="%.0f" % (100 * t["pose"] / t["total"]),
         em_share_true="%.0f" % (100 * shares["true"]["em"] / shares["true"]["total"])))

@@ -5,7 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <octomap/OcTree.h>
+
 #include <fstream>
+#include <sstream>
 
 #include "pmap/common/error.h"
 #include "pmap/eval/map_accuracy.h"
@@ -75,6 +78,20 @@ TEST(OctomapBaseline, AccuracyIsOfTheOrderOfTheResolution) {
   EXPECT_GE(a.gt_to_map.mean_m, 0.05 - 1e-6);
   EXPECT_LE(a.gt_to_map.p95_m, std::sqrt(3.0) * 0.05 + 1e-6);
   EXPECT_NEAR(a.map_to_gt.mean_m, 0.05, 0.02);
+}
+
+TEST(OctomapBaseline, BtContentIsWhatWriteBinaryWrites) {
+  octomap::OcTree a(0.05), b(0.05);
+  octomap::Pointcloud cloud;
+  for (const Vector3d& p : wallScan().xyz) {
+    cloud.push_back(static_cast<float>(p.x()), static_cast<float>(p.y()),
+                    static_cast<float>(p.z()));
+  }
+  a.insertPointCloud(cloud, octomap::point3d(0, 0, 0));
+  b.insertPointCloud(cloud, octomap::point3d(0, 0, 0));
+  std::ostringstream written;
+  ASSERT_TRUE(a.writeBinary(written));
+  EXPECT_EQ(btFileContent(b), written.str());
 }
 
 TEST(OctomapBaseline, PointsWithoutAnOriginAreAnInputError) {

@@ -66,6 +66,23 @@ std::vector<Eigen::Vector3d> occupiedCentres(const octomap::OcTree& tree, std::s
 
 }  // namespace
 
+std::string btFileContent(octomap::OcTree& tree) {
+  // What OcTree::writeBinary writes (maximum likelihood, pruned, then
+  // AbstractOccupancyOcTree::writeBinaryConst's header and the data), without
+  // the " done." that Debian's liboctomap prints on stderr there.
+  tree.toMaxLikelihood();
+  tree.prune();
+  std::ostringstream s;
+  s << "# Octomap OcTree binary file\n# (feel free to add / change comments, but leave the first "
+       "line as it is!)\n#\n";
+  s << "id " << tree.getTreeType() << "\n";
+  s << "size " << tree.size() << "\n";
+  s << "res " << tree.getResolution() << "\n";
+  s << "data\n";
+  tree.writeBinaryData(s);
+  return s.str();
+}
+
 ScanOrigins readScanOrigins(const std::filesystem::path& csv) {
   std::ifstream in(csv);
   if (!in) {
@@ -131,9 +148,7 @@ OctomapResult buildOctomap(const ScanOrigins& origins, const MapPoints& points,
   r.nodes = tree.size();
   r.leaves = tree.getNumLeafNodes();
   r.occupied_centres = occupiedCentres(tree, r.occupied_leaves);
-  std::ostringstream bt;
-  tree.writeBinary(bt);  // what a .bt file holds (maximum likelihood, pruned)
-  r.file_bytes = bt.str().size();
+  r.file_bytes = btFileContent(tree).size();
   return r;
 }
 

@@ -13,6 +13,10 @@
 
 #include "pmap/eval/map_files.h"
 
+namespace octomap {
+class OcTree;
+}
+
 namespace pmap::eval {
 
 /// Sensor origins of the structure scans, by scan index (scans.csv's `scan`
@@ -43,6 +47,11 @@ struct OctomapResult {
   /// occupied leaves expanded), in the map frame.
   std::vector<Eigen::Vector3d> occupied_centres;
 };
+
+/// The bytes of the tree's .bt file, as OcTree::writeBinary writes them
+/// (it turns the tree to maximum likelihood and prunes it first, as that
+/// does), without liboctomap's debug output.
+std::string btFileContent(octomap::OcTree& tree);
 
 /// Builds the tree: per scan (in scans.csv order of the points' first
 /// appearance), insertPointCloud(points, origin). Points whose scan has no
