@@ -48,7 +48,7 @@ fi
 
 cpu=$(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //')
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
-dirty=$(git diff --quiet HEAD 2>/dev/null || echo " (with uncommitted changes)")
+dirty=$(git diff --quiet HEAD -- . ":!doc" 2>/dev/null || echo " (with uncommitted changes outside doc/)")
 /usr/bin/python3 scripts/results_report.py "$runs" doc/RESULTS.md doc/images \
   "$(date -u +%Y-%m-%d)" "$commit$dirty" "$(nproc)" "$cpu"
 echo "wrote doc/RESULTS.md"
