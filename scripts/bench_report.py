@@ -74,6 +74,7 @@ def main():
         mstep_us="%.0f" % m_us, fit_share="%.0f" % (100 * fit_us / m_us),
         online_ms="%.2f" % (ns_per_item(online) / 1e6),
         em_p99_ms="%.2f" % shares["true"]["em_p99"],
+        plane_ns="%.0f" % ns_per_item(b["BM_PlaneFromMoments"]),
         budget_factor="%.0f" % (200 / shares["true"]["em_p99"]), write_share="%.0f" % (100 * t["write"] / t["total"]),
         date=date, commit=commit, nproc=nproc, cpu=cpu, reps=reps, bench="\n".join(lines),
         stages=stages, pose_share="%.0f" % (100 * t["pose"] / t["total"]),
