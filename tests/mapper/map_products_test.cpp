@@ -118,6 +118,20 @@ TEST_F(SampleProducts, GltfValidatorFindsNoErrorInMapGlb) {
   EXPECT_EQ(v.exit_code, 0) << v.output;
 }
 
+// The geometry-only files the baselines compare (doc/outputs.md): valid
+// glTF, smaller than the textured map.
+TEST_F(SampleProducts, GeometryOnlyGlbFilesAreValid) {
+  const std::string missing = pmap::test::missingValidator(PMAP_NODE, PMAP_WEB_TOOLS_DIR);
+  ASSERT_TRUE(missing.empty()) << missing;
+  for (const char* f : {"map-geometry.glb", "raw.glb"}) {
+    ASSERT_TRUE(fs::exists(out_ / f)) << f;
+    const auto v = pmap::test::validateGltf(PMAP_NODE, PMAP_WEB_TOOLS_DIR, out_ / f);
+    ASSERT_TRUE(v.report.is_object()) << v.output;
+    EXPECT_EQ(v.report["numErrors"], 0) << f << ": " << v.output;
+  }
+  EXPECT_LT(fs::file_size(out_ / "map-geometry.glb"), fs::file_size(out_ / "map.glb"));
+}
+
 TEST_F(SampleProducts, ViewerDrawsTheTexturedMapInHeadlessChromium) {
   const pmap::test::BrowserTools tools{PMAP_NODE, PMAP_CHROMIUM_EXECUTABLE, PMAP_VIEWER_TOOLS_DIR};
   const std::string missing = pmap::test::missingBrowserTools(tools);

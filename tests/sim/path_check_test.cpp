@@ -45,7 +45,7 @@ TEST(PathCheck, RejectsGrazingABin) {
 }
 
 TEST(PathCheck, BundledWorldsPass) {
-  for (const char* name : {"default", "second", "long"}) {
+  for (const char* name : {"default", "second", "office", "long"}) {
     const World w = buildWorld(
         loadWorldFile(std::string(PMAP_SOURCE_DIR) + "/config/worlds/" + name + ".json"));
     EXPECT_NO_THROW(check(w)) << name;

@@ -225,7 +225,7 @@ void expectClosed(const World& world) {
 }
 
 TEST(WorldBuilder, BundledWorldsAreClosedAndFaceTheRobot) {
-  for (const char* name : {"default", "second", "long"}) {
+  for (const char* name : {"default", "second", "office", "long"}) {
     expectClosed(bundled(name));
   }
 }

@@ -24,7 +24,7 @@ std::string corridorWith(const std::string& inner) {
 }
 
 TEST(WorldLoader, LoadsTheBundledWorlds) {
-  for (const char* name : {"default", "second", "long"}) {
+  for (const char* name : {"default", "second", "office", "long"}) {
     const WorldSpec w =
         loadWorldFile(std::string(PMAP_SOURCE_DIR) + "/config/worlds/" + name + ".json");
     EXPECT_EQ(w.name, name);

@@ -8,6 +8,7 @@
 #include "pmap/common/error.h"
 #include "pmap/common/text.h"
 #include "pmap/config/command_line.h"
+#include "pmap/eval/baseline_evaluation.h"
 #include "pmap/eval/ground_truth.h"
 #include "pmap/eval/label_check.h"
 #include "pmap/eval/map_files.h"
@@ -150,6 +151,9 @@ json evaluateMap(const MapEvalArgs& args) {
   }
   addSurfaceEvaluation(args, gt, points ? &*points : nullptr, pe.alignment, doc);
   addTextureEvaluation(args, gt, pe.alignment, doc);
+  if (points) {
+    addBaselineKeys(args.map_dir, gt, *points, pe.alignment, BaselineOptions{}, doc);
+  }
   return doc;
 }
 
@@ -172,6 +176,7 @@ int mapEvalMain(int argc, const char* const* argv) {
                     doc["label_check"]["median_m"].get<double>());
       }
       std::fputs(surfaceReportText(doc).c_str(), stdout);
+      std::fputs(baselineReportText(doc).c_str(), stdout);
       if (doc.contains("texture")) {
         for (const json& p : doc["texture"]["posters"]) {
           if (p.contains("psnr_db")) {

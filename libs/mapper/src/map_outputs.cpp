@@ -54,6 +54,8 @@ void writeMapFiles(const std::filesystem::path& out, const MapProducts& p, const
   if (textured) {
     products::writeTexturesCsv(out / "textures.csv", m);
     writeFramesCsv(out / "frames.csv", p);
+    // The geometry alone, for size comparisons (map-eval's planar_map).
+    products::writeMapGeometryGlb(out / "map-geometry.glb", m);
   }
   const std::vector<std::uint8_t> glb = products::encodeMapGlb(m, textured);
   writeFileAtomically(out / "map.glb", [&glb](std::ostream& os) {

@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <nlohmann/json.hpp>
 
 #include "pmap/common/atomic_file.h"
 #include "pmap/mapper/map_outputs.h"
 #include "pmap/poses/poses_file.h"
 #include "pmap/products/json_file.h"
+#include "pmap/products/map_gltf.h"
 #include "pmap/products/planar_map_files.h"
 #include "pmap/products/point_files.h"
 #include "pmap/products/vrml.h"
@@ -196,6 +198,27 @@ void writeRawMap(const fs::path& path, const MappingResult& r) {
                           " triangles from neighbouring beams of consecutive scans");
 }
 
+/// raw.glb: the raw map's geometry alone as glTF binary (its triangles as the
+/// fine-triangle mesh, only the vertices they use), the size the baselines
+/// compare (doc/outputs.md).
+void writeRawMapGlb(const fs::path& path, const MappingResult& r) {
+  products::MapModel model;
+  std::vector<std::uint32_t> slot(r.map.size(), UINT32_MAX);
+  for (const auto& t : r.raw_triangles) {
+    std::array<std::uint32_t, 3> out{};
+    for (int k = 0; k < 3; ++k) {
+      if (slot[t[k]] == UINT32_MAX) {
+        slot[t[k]] = static_cast<std::uint32_t>(model.fine.vertices.size());
+        model.fine.vertices.push_back(r.map.xyz()[t[k]]);
+      }
+      out[k] = slot[t[k]];
+    }
+    model.fine.triangles.push_back(out);
+  }
+  model.fine.color = {0.75, 0.75, 0.7};
+  products::writeMapGlb(path, model, /*with_textures=*/false);
+}
+
 }  // namespace
 
 void writeOutputs(const MapperConfig& config, const MapperArgs& args, const MappingResult& r,
@@ -214,6 +237,7 @@ void writeOutputs(const MapperConfig& config, const MapperArgs& args, const Mapp
                              r.em ? products::surfaceIdsOfPoints(r.em->map) : std::vector<int>{});
     if (config.output.raw_map) {
       writeRawMap(args.out / "raw.wrl", r);
+      writeRawMapGlb(args.out / "raw.glb", r);
     }
     if (!r.online.empty()) {
       writeOnlineCsv(args.out / "online.csv", r);

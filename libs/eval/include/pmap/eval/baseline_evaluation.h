@@ -1,0 +1,36 @@
+// map-eval's comparison with the baselines (doc/evaluation.md, "Baselines"):
+// the OctoMap built from the same scans and poses, the raw triangle map
+// (raw.glb) and the planar map (map.glb / map-geometry.glb), with the same
+// accuracy figures (map_accuracy.h), sizes and counts.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "pmap/eval/ground_truth.h"
+#include "pmap/eval/map_accuracy.h"
+#include "pmap/eval/map_files.h"
+#include "pmap/eval/pose_metrics.h"
+
+namespace pmap::eval {
+
+struct BaselineOptions {
+  std::vector<double> octomap_resolutions_m = {0.05, 0.10};
+  AccuracyOptions accuracy;
+  bool validate(std::string* why) const;
+};
+
+/// Adds, where the map directory has the files: `octomap` (scans.csv and
+/// points.ply), `raw_map` (raw.glb), `planar_map` (surfaces.csv and map.glb),
+/// and `baseline_accuracy` (the sampling used). `points` are the directory's
+/// points.ply, `map_to_gt` the pose alignment.
+void addBaselineKeys(const std::filesystem::path& map_dir, const GroundTruth& gt,
+                     const MapPoints& points, const Rigid2D& map_to_gt,
+                     const BaselineOptions& options, nlohmann::json& doc);
+
+/// A few lines for map-eval's report: each map's mean / p95 error and size.
+std::string baselineReportText(const nlohmann::json& doc);
+
+}  // namespace pmap::eval

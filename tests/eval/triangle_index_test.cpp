@@ -1,0 +1,75 @@
+// Nearest-triangle distances: closest points by region, the grid search
+// against brute force, caps, degenerate triangles and bad input.
+#include "pmap/eval/triangle_index.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+namespace pmap::eval {
+namespace {
+using Eigen::Vector3d;
+
+const Triangle3 kUnit{Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(0, 1, 0)};
+
+TEST(ClosestPointOnTriangle, InteriorEdgeAndVertexRegions) {
+  EXPECT_TRUE(closestPointOnTriangle(kUnit, {0.2, 0.2, 0.5}).isApprox(Vector3d(0.2, 0.2, 0)));
+  EXPECT_TRUE(closestPointOnTriangle(kUnit, {0.5, -1, 0}).isApprox(Vector3d(0.5, 0, 0)));
+  EXPECT_TRUE(closestPointOnTriangle(kUnit, {1, 1, 0}).isApprox(Vector3d(0.5, 0.5, 0)));
+  EXPECT_TRUE(closestPointOnTriangle(kUnit, {-1, -1, 3}).isApprox(Vector3d(0, 0, 0)));
+  EXPECT_TRUE(closestPointOnTriangle(kUnit, {2, -0.5, 0}).isApprox(Vector3d(1, 0, 0)));
+}
+
+TEST(ClosestPointOnTriangle, DegenerateTrianglesArePointsAndSegments) {
+  const Triangle3 point{Vector3d(1, 2, 3), Vector3d(1, 2, 3), Vector3d(1, 2, 3)};
+  EXPECT_TRUE(closestPointOnTriangle(point, {0, 0, 0}).isApprox(Vector3d(1, 2, 3)));
+  const Triangle3 segment{Vector3d(0, 0, 0), Vector3d(2, 0, 0), Vector3d(1, 0, 0)};
+  EXPECT_TRUE(closestPointOnTriangle(segment, {1.5, 1, 0}).isApprox(Vector3d(1.5, 0, 0)));
+}
+
+TEST(TriangleIndex, MatchesBruteForce) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-3, 3);
+  std::vector<Triangle3> tris;
+  for (int k = 0; k < 200; ++k) {
+    const Vector3d a(u(rng), u(rng), u(rng));
+    tris.push_back({a, a + 0.3 * Vector3d(u(rng), u(rng), u(rng)),
+                    a + 0.3 * Vector3d(u(rng), u(rng), u(rng))});
+  }
+  TriangleIndexOptions o;
+  o.cell_m = 0.2;
+  o.max_distance_m = 10;
+  const TriangleIndex index(tris, o);
+  for (int q = 0; q < 300; ++q) {
+    const Vector3d p(u(rng), u(rng), u(rng));
+    double best = 1e9;
+    for (const auto& t : tris)
+      best = std::min(best, (closestPointOnTriangle(t, p) - p).norm());
+    EXPECT_NEAR(index.distance(p), best, 1e-12);
+  }
+}
+
+TEST(TriangleIndex, FarAndEmptyAreCapped) {
+  TriangleIndexOptions o;
+  o.max_distance_m = 1.0;
+  EXPECT_DOUBLE_EQ(TriangleIndex({}, o).distance({0, 0, 0}), 1.0);
+  EXPECT_DOUBLE_EQ(TriangleIndex({kUnit}, o).distance({0, 0, 5}), 1.0);
+  EXPECT_NEAR(TriangleIndex({kUnit}, o).distance({0.1, 0.1, 0.4}), 0.4, 1e-12);
+}
+
+TEST(TriangleIndex, RejectsBadOptionsAndCorners) {
+  TriangleIndexOptions o;
+  o.cell_m = 0;
+  std::string why;
+  EXPECT_FALSE(o.validate(&why));
+  EXPECT_NE(why.find("cell_m"), std::string::npos);
+  EXPECT_THROW(TriangleIndex({kUnit}, o), std::invalid_argument);
+  Triangle3 bad = kUnit;
+  bad.b.x() = NAN;
+  EXPECT_THROW(TriangleIndex({bad}, TriangleIndexOptions{}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace pmap::eval
