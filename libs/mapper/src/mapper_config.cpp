@@ -133,6 +133,7 @@ void RefinementSection::load(config::SectionReader& r) {
   r.read("seam_sigma_m", o.seam_sigma_m);
   r.read("seam_give_up_m", o.seam_give_up_m);
   r.read("extent_sigma_m", o.extent_sigma_m);
+  r.read("free_rotation", o.free_rotation);
   r.read("rotation_sigma_deg", o.rotation_sigma_deg);
   r.read("robust_loss_sigmas", o.robust_loss_sigmas);
   r.read("max_points_per_surface", o.max_points_per_surface);

@@ -50,10 +50,12 @@ class Problem {
     problem_.AddResidualBlock(cost, nullptr, p.normal.data(), &p.offset);
   }
 
-  // The in-plane part of eq. (5) for the members near surface j's boundary
-  // (the others cannot leave the rectangle), an even subsample of at most
-  // max_points_per_surface, each weighted by e_ij times (band weight /
-  // subsample weight), under a Huber loss.
+  // The in-plane part of eq. (5) for the members within the EM's rectangle
+  // and near its boundary (the others cannot leave it), an even subsample
+  // of at most max_points_per_surface, each weighted by e_ij times (band
+  // weight / subsample weight), under a Huber loss. They keep an edge from
+  // cutting into its points; members the EM's rectangle fit left outside
+  // (eq. 29 with coherent members) do not pull it out.
   void addBoundary(std::size_t j, const std::vector<Eigen::Vector3d>& points,
                    const std::vector<SurfaceSample>& samples, double sigma_m) {
     SurfaceParams& p = params_[j];
@@ -62,8 +64,10 @@ class Problem {
     std::vector<SurfaceSample> near;
     for (const SurfaceSample& s : samples) {
       const Eigen::Vector3d d = points[static_cast<std::size_t>(s.point)] - r.centre;
-      if (s.member && (std::abs(r.axis_u.dot(d)) > r.half_u - band ||
-                       std::abs(r.axisV().dot(d)) > r.half_v - band)) {
+      const double u = std::abs(r.axis_u.dot(d));
+      const double v = std::abs(r.axisV().dot(d));
+      if (s.member && u <= r.half_u && v <= r.half_v &&
+          (u > r.half_u - band || v > r.half_v - band)) {
         near.push_back(s);
       }
     }
@@ -136,6 +140,9 @@ class Problem {
     problem_.SetParameterBlockConstant(&params_[j].offset);
   }
 
+  /// Surface j keeps the EM's in-plane orientation.
+  void holdRotation(std::size_t j) { problem_.SetParameterBlockConstant(&params_[j].rotation); }
+
   /// Surface j keeps its EM rectangle in its plane (none of its edges ends
   /// on a seam).
   void holdRectangle(std::size_t j) {
@@ -203,6 +210,8 @@ ceres::Solver::Summary solveOnce(const std::vector<Eigen::Vector3d>& points,
     }
     if (!has_seam_edge[j] || held[j]) {
       problem.holdRectangle(j);
+    } else if (!options.free_rotation) {
+      problem.holdRotation(j);
     }
   }
   return problem.solve();

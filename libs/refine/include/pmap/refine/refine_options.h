@@ -36,6 +36,12 @@ struct RefineOptions {
   /// Faithfulness to the points' extent: the scale of a rectangle bound's
   /// move from the EM's fit (m), > 0.
   double extent_sigma_m = 0.05;
+  /// false (default): rectangles keep the EM's in-plane orientation (only
+  /// their planes and bounds move). true: they may turn in their plane,
+  /// scale rotation_sigma_deg; measured worse on online maps, whose long
+  /// rectangles then square up to a short seam and grow to hold their
+  /// corner points (doc/refinement.md).
+  bool free_rotation = false;
   /// Scale of a rectangle's in-plane rotation from the EM's fit (deg), > 0.
   double rotation_sigma_deg = 5.0;
   /// Huber loss of the measurements' in-plane residuals, in units of sigma, > 0.
