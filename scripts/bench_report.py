@@ -22,14 +22,14 @@ def ns_per_item(b):
 
 
 def stage_table(work, reps):
-    rows = ["| poses | total | read | pose (ICP) | map (points, raw mesh) | EM | texture | write | "
-            "EM per scan p50 / p99 (ms) |", "|---|---|---|---|---|---|---|---|---|"]
+    rows = ["| poses | total | read | pose (ICP) | map (points, raw mesh) | EM | refinement | texture "
+            "| write | EM per scan p50 / p99 (ms) |", "|---|---|---|---|---|---|---|---|---|---|"]
     shares = {}
     for poses in ("true", "icp"):
         runs = [json.load(open(os.path.join(work, "map-%s-%d" % (poses, r), "summary.json")))
                 for r in range(1, reps + 1)]
         med = {k: statistics.median(r["timing_s"].get(k, 0.0) for r in runs)
-               for k in ("total", "read", "pose", "map", "em", "texture", "write")}
+               for k in ("total", "read", "pose", "map", "em", "refine", "texture", "write")}
         p50 = statistics.median(r["em_per_scan_ms"]["p50"] for r in runs)
         p99 = statistics.median(r["em_per_scan_ms"]["p99"] for r in runs)
         rows.append("| %s | %s | %.2f / %.2f |" % (
