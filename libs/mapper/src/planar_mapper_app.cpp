@@ -30,12 +30,13 @@ void PlanarMapperApp::run() {
     live = std::make_unique<LiveView>(options);
   }
   const MappingResult result = runPipeline(*config_, *args_, live.get());
-  const double elapsed =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::optional<MapProducts> products;
   if (result.em) {
     products = buildMapProducts(*config_, *args_, result);
   }
+  // Everything before writing, the map products (textures) included.
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   writeOutputs(*config_, *args_, result, products ? &*products : nullptr, elapsed);
   if (live) {
     live->finish(products ? products->model : products::MapModel{}, result.map);
