@@ -151,7 +151,7 @@ bool RawlogReader::next(RawlogRecord& record) {
   mrpt::serialization::CSerializable::Ptr object;
   bool refused = false;
   try {
-    ScopedAllocationLimit limit(options_.max_allocation_mb << 20);
+    ScopedAllocationLimit limit(options_.max_allocation_mb << 20, options_.max_record_mb << 20);
     try {
       object = archive.ReadObject();
     } catch (...) {
@@ -163,7 +163,9 @@ bool RawlogReader::next(RawlogRecord& record) {
   } catch (const std::bad_alloc&) {
     done_ = true;
     fail(refused ? "corrupt record (a size field asks for more than " +
-                       std::to_string(options_.max_allocation_mb) + " MiB)"
+                       std::to_string(options_.max_allocation_mb) +
+                       " MiB, or the record for more than " +
+                       std::to_string(options_.max_record_mb) + " MiB in all)"
                  : "out of memory while decoding",
          start);
   } catch (const std::exception& e) {
