@@ -46,15 +46,63 @@ void checkAllocationLimit(std::size_t size) {
 
 // Replacement of the global allocation functions ([replacement.functions]):
 // std::vector and std::string (a string's length field, most containers).
-void* operator new(std::size_t size) {
+// The whole family is replaced, all on malloc / aligned_alloc / free, so that
+// every pair matches (AddressSanitizer checks new/delete against
+// malloc/free: replacing only some would mix the runtime's and ours).
+namespace {
+
+void* allocate(std::size_t size) {
   pmap::input::checkAllocationLimit(size);
   if (void* p = std::malloc(size == 0 ? 1 : size)) {
     return p;
   }
   throw std::bad_alloc();
 }
+
+void* allocateAligned(std::size_t size, std::align_val_t align) {
+  pmap::input::checkAllocationLimit(size);
+  const auto a = static_cast<std::size_t>(align);
+  const std::size_t rounded = size == 0 ? a : (size + a - 1) / a * a;
+  if (void* p = std::aligned_alloc(a, rounded)) {
+    return p;
+  }
+  throw std::bad_alloc();
+}
+
+template <class F>
+void* orNull(F&& f) noexcept {
+  try {
+    return f();
+  } catch (const std::bad_alloc&) {
+    return nullptr;
+  }
+}
+
+}  // namespace
+
+void* operator new(std::size_t size) {
+  return allocate(size);
+}
 void* operator new[](std::size_t size) {
-  return ::operator new(size);
+  return allocate(size);
+}
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+  return orNull([size] { return allocate(size); });
+}
+void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
+  return orNull([size] { return allocate(size); });
+}
+void* operator new(std::size_t size, std::align_val_t align) {
+  return allocateAligned(size, align);
+}
+void* operator new[](std::size_t size, std::align_val_t align) {
+  return allocateAligned(size, align);
+}
+void* operator new(std::size_t size, std::align_val_t align, const std::nothrow_t&) noexcept {
+  return orNull([size, align] { return allocateAligned(size, align); });
+}
+void* operator new[](std::size_t size, std::align_val_t align, const std::nothrow_t&) noexcept {
+  return orNull([size, align] { return allocateAligned(size, align); });
 }
 void operator delete(void* p) noexcept {
   std::free(p);
@@ -66,6 +114,30 @@ void operator delete(void* p, std::size_t) noexcept {
   std::free(p);
 }
 void operator delete[](void* p, std::size_t) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, const std::nothrow_t&) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p, const std::nothrow_t&) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::align_val_t) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p, std::align_val_t) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept {
   std::free(p);
 }
 
