@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "allocation_guard.h"
+#include "guarded_classes.h"
 #include "pmap/common/error.h"
 #include "pmap/common/text.h"
 
@@ -146,6 +147,7 @@ bool RawlogReader::next(RawlogRecord& record) {
   if (done_) {
     return false;
   }
+  registerGuardedClasses();  // stands in for MRPT's crashing decoders
   const std::uint64_t start = stream_->getPosition();
   auto archive = mrpt::serialization::archiveFrom(*stream_);
   mrpt::serialization::CSerializable::Ptr object;
