@@ -19,6 +19,8 @@ packages=(
   chromium xvfb xauth
   # scripts/gui-screenshot.sh: grabs the Xvfb screen
   x11-apps netpbm
+  # scripts/fuzz.sh: libFuzzer comes with clang's runtime libraries
+  clang libclang-rt-14-dev
 )
 
 SUDO=""

@@ -171,6 +171,25 @@ TEST(IniDocument, MissingFileOrDirectoryIsAnError) {
   EXPECT_EQ(loadError(kData), kData.string() + ": cannot open file (it is a directory)");
 }
 
+// A device never ends (/dev/zero) or blocks (a FIFO); a huge file is not an
+// ini: both are refused before reading, as file or as @include target.
+TEST(IniDocument, DevicesAndHugeFilesAreNotRead) {
+  EXPECT_EQ(loadError("/dev/zero"), "/dev/zero: not a regular file (a device, FIFO or socket)");
+  const fs::path dir = fs::path(PMAP_TEST_TMP_DIR) / "ini_devices";
+  fs::create_directories(dir);
+  std::ofstream(dir / "inc.ini") << "[A]\n@include /dev/zero\n";
+  EXPECT_NE(loadError(dir / "inc.ini").find("/dev/zero"), std::string::npos);
+  {
+    std::ofstream big(dir / "big.ini");
+    big << "[A]\n";
+    for (int i = 0; i < 300000; ++i) {
+      big << "; a comment line to make the file larger than four MiB\n";
+    }
+  }
+  EXPECT_EQ(loadError(dir / "big.ini"),
+            (dir / "big.ini").string() + ": file larger than 4 MiB, not an ini file");
+}
+
 TEST(IniDocument, IncludeResolvesRelativeToTheIncludingFile) {
   const auto doc = IniDocument::load(kData / "with_include.ini");
   EXPECT_EQ(doc.sectionNames(), (std::vector<std::string>{"PlanarEM", "Sensors"}));

@@ -165,6 +165,21 @@ TEST(FitSurface, NoisyPlaneAndDegenerateSets) {
   EXPECT_EQ(fitSurface(same, allIndices(10), r), FitStatus::kDegenerate);
 }
 
+// MRPT's getRegressionPlane rejects a perfectly flat 1 mm square as
+// "aligned" (ROBUSTNESS.md); eigenvalue ratios do not depend on the scale.
+TEST(FitSurface, AFlatOneMillimetreSquareIsATinyButValidPatch) {
+  std::vector<Eigen::Vector3d> pts;
+  for (int i = 0; i < 10; ++i) {
+    for (int j = 0; j < 10; ++j) {
+      pts.emplace_back(1e-4 * i, 1e-4 * j, 0.0);
+    }
+  }
+  Rectangle r;
+  ASSERT_EQ(fitSurface(pts, allIndices(pts.size()), r), FitStatus::kOk);
+  EXPECT_NEAR(std::abs(r.normal.z()), 1.0, 1e-12);
+  EXPECT_NEAR(r.area(), 0.9e-3 * 0.9e-3, 1e-12);
+}
+
 TEST(CoherentMembers, DropsMembersWithFewSameCauseNeighbours) {
   // A 1 x 8 row: members 0..6 of surface 0, point 7 of surface 1; point 3 is
   // labelled 0 but both its neighbours are 1.

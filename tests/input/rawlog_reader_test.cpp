@@ -2,6 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <mrpt/io/CFileOutputStream.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/poses/CPosePDFGaussian.h>
+#include <mrpt/serialization/CArchive.h>
+
 #include <fstream>
 
 #include "pmap/common/error.h"
@@ -115,6 +121,44 @@ TEST(RawlogReader, FlippedBytesInGzipAreCorruption) {
   const std::string error = errorOf(dir / "full.rawlog");
   EXPECT_FALSE(error.empty());
   EXPECT_NE(error.find("record "), std::string::npos) << error;
+}
+
+// The reader decodes CActionRobotMovement2D through its own guard
+// (guarded_classes.cpp), which re-encodes what it checked for MRPT's
+// decoder: both estimation methods must come back exactly.
+TEST(RawlogReader, GuardedActionDecoderKeepsBothEstimationMethods) {
+  using mrpt::obs::CActionRobotMovement2D;
+  const auto dir = testing::freshTestDir("reader_actions");
+  CActionRobotMovement2D odometry;
+  odometry.computeFromOdometry(mrpt::poses::CPose2D(0.5, -0.25, 0.1),
+                               CActionRobotMovement2D::TMotionModelOptions());
+  CActionRobotMovement2D matched;
+  matched.estimationMethod = CActionRobotMovement2D::emScan2DMatching;
+  matched.poseChange = mrpt::poses::CPosePDFGaussian::Create(mrpt::poses::CPose2D(1.5, 2.0, -0.3));
+  {
+    mrpt::io::CFileOutputStream out((dir / "a.rawlog").string());
+    auto arch = mrpt::serialization::archiveFrom(out);
+    mrpt::obs::CActionCollection acts;
+    acts.insert(odometry);
+    acts.insert(matched);
+    arch << acts;
+  }
+  RawlogReader reader(dir / "a.rawlog");
+  RawlogRecord r;
+  ASSERT_TRUE(reader.next(r));
+  const auto acts = std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(r.object);
+  ASSERT_TRUE(acts);
+  ASSERT_EQ(acts->size(), 2u);
+  const auto a0 = acts->getActionByClass<CActionRobotMovement2D>(0);
+  const auto a1 = acts->getActionByClass<CActionRobotMovement2D>(1);
+  ASSERT_TRUE(a0 && a1);
+  EXPECT_EQ(a0->estimationMethod, CActionRobotMovement2D::emOdometry);
+  EXPECT_NEAR(a0->rawOdometryIncrementReading.x(), 0.5, 1e-12);
+  EXPECT_NEAR(a0->rawOdometryIncrementReading.phi(), 0.1, 1e-12);
+  EXPECT_EQ(a1->estimationMethod, CActionRobotMovement2D::emScan2DMatching);
+  EXPECT_NEAR(a1->poseChange->getMeanVal().x(), 1.5, 1e-12);
+  EXPECT_NEAR(a1->poseChange->getMeanVal().phi(), -0.3, 1e-12);
+  EXPECT_FALSE(reader.next(r));
 }
 
 }  // namespace

@@ -9,6 +9,23 @@ namespace pmap::testing {
 
 enum class FixtureFormat { kObservations, kSensoryFrames };
 
+/// What the vertical (structure) scans return.
+enum class StructureRanges {
+  kCorridor,    ///< the ideal walls and ceiling
+  kAllInvalid,  ///< every beam flagged invalid
+  kNanValid,    ///< every 7th beam NaN / +Inf but flagged valid
+  kNegative,    ///< every 5th beam 0 or negative, flagged valid
+  kScattered,   ///< valid ranges at random: nothing planar to find
+};
+
+/// Damage to the observations' timestamps (odometry and both lasers).
+enum class TimestampFault {
+  kNone,
+  kZero,       ///< every 4th cycle has timestamp 0 (INVALID_TIMESTAMP)
+  kDuplicate,  ///< every 4th cycle repeats the previous cycle's timestamps
+  kBackwards,  ///< every 4th cycle lies 1 s before the previous one
+};
+
 struct FixtureOptions {
   FixtureFormat format = FixtureFormat::kObservations;
   bool gzip = true;
@@ -16,6 +33,11 @@ struct FixtureOptions {
   bool vertical = true;        ///< add a LASER_V scan per cycle
   bool leading_frame = false;  ///< sf format: start with a frame without action
   double speed_mps = 0.4;
+  StructureRanges ranges = StructureRanges::kCorridor;
+  TimestampFault timestamps = TimestampFault::kNone;
+  bool nan_odometry = false;  ///< cycle 5's odometry reading is (NaN, NaN, NaN)
+  double offset_x_m = 0.0;    ///< odometry starts here (e.g. 1e6: far from the origin)
+  std::string laser_v_label = "LASER_V";
 };
 
 /// Writes a rawlog of a robot driving +x along a 4 m wide corridor whose

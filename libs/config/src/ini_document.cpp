@@ -1,5 +1,6 @@
 #include "pmap/config/ini_document.h"
 
+#include <cstdint>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -60,10 +61,21 @@ std::string quoteLine(const std::string& line) {
   return "'" + out + "'";
 }
 
+// An ini larger than this is not a configuration (and /dev/zero never ends).
+constexpr std::uintmax_t kMaxIniBytes = 4u << 20;
+
 bool readFile(const fs::path& path, std::string* text, std::string* why) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) {
     *why = "cannot open file (it is a directory)";
+    return false;
+  }
+  if (fs::exists(path, ec) && !fs::is_regular_file(path, ec)) {
+    *why = "not a regular file (a device, FIFO or socket)";
+    return false;
+  }
+  if (fs::exists(path, ec) && fs::file_size(path, ec) > kMaxIniBytes) {
+    *why = "file larger than 4 MiB, not an ini file";
     return false;
   }
   std::ifstream in(path, std::ios::binary);

@@ -1,9 +1,13 @@
 #include "pmap/input/observation_source.h"
 
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/poses/CPose3D.h>
 #include <mrpt/system/datetime.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "pmap/common/error.h"
 
@@ -21,6 +25,43 @@ const char* toString(RawlogFormat format) {
       return "unknown";
   }
 }
+
+namespace {
+
+bool finite(const mrpt::poses::CPose2D& p) {
+  return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.phi());
+}
+
+bool finite(const mrpt::poses::CPose3D& p) {
+  return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()) &&
+         std::isfinite(p.yaw()) && std::isfinite(p.pitch()) && std::isfinite(p.roll());
+}
+
+// The poses the pose stage would use: the sensor pose, and an odometry
+// reading. One NaN there makes MRPT's ICP estimate NaN for the rest of the
+// run (and every point placed after it).
+bool finitePoses(const mrpt::obs::CObservation& obs) {
+  mrpt::poses::CPose3D sensor;
+  obs.getSensorPose(sensor);
+  if (!finite(sensor)) {
+    return false;
+  }
+  const auto* odometry = dynamic_cast<const mrpt::obs::CObservationOdometry*>(&obs);
+  return odometry == nullptr || finite(odometry->odometry);
+}
+
+// An odometry action whose increment is NaN / Inf (sf format).
+bool finiteAction(const mrpt::obs::CActionCollection& actions) {
+  for (const auto& a : actions) {
+    const auto* move = dynamic_cast<const mrpt::obs::CActionRobotMovement2D*>(a.get());
+    if (move != nullptr && !finite(move->rawOdometryIncrementReading)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
 
 bool SelectionOptions::validate(std::string* why) const {
   if (from_index > to_index) {
@@ -71,6 +112,14 @@ void ObservationSource::addObservation(const mrpt::obs::CObservation::Ptr& obs, 
     ++stats_.invalid_timestamps;
     return;
   }
+  if ((item.roles.odometry || item.roles.pose_laser) && !finitePoses(*obs)) {
+    ++stats_.non_finite_poses;  // not for the poses; a structure scan is checked when extracted
+    item.roles.odometry = false;
+    item.roles.pose_laser = false;
+    if (!item.roles.any()) {
+      return;
+    }
+  }
   if (item.roles.structure &&
       item.structure_index % static_cast<std::int64_t>(selection_.decimate) != 0) {
     item.roles.structure = false;
@@ -100,6 +149,10 @@ bool ObservationSource::next(InputStep& step) {
       noteFormat(RawlogFormat::kSensoryFrames);
       seen_action_ = true;
       pending_action_ = in_range ? action : nullptr;
+      if (pending_action_ && !finiteAction(*action)) {
+        ++stats_.non_finite_poses;
+        pending_action_.reset();
+      }
       continue;
     }
     if (auto sf = std::dynamic_pointer_cast<CSensoryFrame>(record.object)) {

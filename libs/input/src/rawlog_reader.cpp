@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "allocation_guard.h"
+#include "guarded_classes.h"
 #include "pmap/common/error.h"
 #include "pmap/common/text.h"
 
@@ -146,12 +147,13 @@ bool RawlogReader::next(RawlogRecord& record) {
   if (done_) {
     return false;
   }
+  registerGuardedClasses();  // stands in for MRPT's crashing decoders
   const std::uint64_t start = stream_->getPosition();
   auto archive = mrpt::serialization::archiveFrom(*stream_);
   mrpt::serialization::CSerializable::Ptr object;
   bool refused = false;
   try {
-    ScopedAllocationLimit limit(options_.max_allocation_mb << 20);
+    ScopedAllocationLimit limit(options_.max_allocation_mb << 20, options_.max_record_mb << 20);
     try {
       object = archive.ReadObject();
     } catch (...) {
@@ -163,7 +165,9 @@ bool RawlogReader::next(RawlogRecord& record) {
   } catch (const std::bad_alloc&) {
     done_ = true;
     fail(refused ? "corrupt record (a size field asks for more than " +
-                       std::to_string(options_.max_allocation_mb) + " MiB)"
+                       std::to_string(options_.max_allocation_mb) +
+                       " MiB, or the record for more than " +
+                       std::to_string(options_.max_record_mb) + " MiB in all)"
                  : "out of memory while decoding",
          start);
   } catch (const std::exception& e) {

@@ -33,6 +33,7 @@ json inputSummary(const MapperArgs& args, const MappingResult& r) {
   in["images"] = r.input.images;
   in["structure_decimated"] = r.input.structure_decimated;
   in["invalid_timestamps"] = r.input.invalid_timestamps;
+  in["non_finite_poses"] = r.input.non_finite_poses;
   in["leading_frame_skipped"] = r.input.leading_frame_skipped;
   in["ignored"] = r.input.ignored;
   in["truncated"] = !r.truncation.empty();
@@ -177,6 +178,7 @@ json summaryJson(const MapperArgs& args, const MappingResult& r, double write_s,
                    {"em", r.timing.em_s},        {"write", write_s},
                    {"refine", r.timing.refine_s}};
   s["mode"] = r.em_mode.empty() ? args.mode : r.em_mode;
+  s["warnings"] = r.warnings;
   s["pose_per_scan_ms"] = percentiles(r.pose_step_ms);
   if (r.em) {
     addPlanarMap(r, s);

@@ -283,7 +283,25 @@ MappingResult runPipeline(const MapperConfig& config, const MapperArgs& args, Li
     result.timing.refine_s = since(t0);
     runRefinement(config, *graph, result);
   }
+  noteNothingFound(args, result);
   return result;
+}
+
+void noteNothingFound(const MapperArgs& args, MappingResult& result) {
+  if (args.poses_only) {
+    return;
+  }
+  const std::string input = args.cloud.empty() ? args.rawlog.string() : args.cloud.string();
+  if (result.map.size() == 0) {
+    result.warnings.push_back(
+        "nothing found: " + input + ": none of the " + std::to_string(result.measurements) +
+        " structure measurements is a valid point (" + std::to_string(result.dropped.total()) +
+        " dropped: invalid, non-finite or out of range); the outputs are valid and empty");
+  } else if (result.em && result.em->map.surfaces.empty()) {
+    result.warnings.push_back("nothing found: " + input + ": no planar surface among the " +
+                              std::to_string(result.map.size()) +
+                              " points; the map holds fine triangles only");
+  }
 }
 
 }  // namespace pmap::mapper

@@ -7,6 +7,7 @@
 #include "pmap/common/error.h"
 #include "pmap/common/text.h"
 #include "pmap/mapper/map_products.h"
+#include "pmap/mapper/output_guard.h"
 #include "pmap/mapper/outputs.h"
 #include "pmap/mapper/pipeline.h"
 
@@ -18,6 +19,7 @@ bool PlanarMapperApp::initialize(int argc, const char* const* argv) {
     return false;
   }
   config_ = loadMapperConfig(args_->config);
+  checkOutputsSpareInputs(*args_);  // before any work: never write over an input
   return true;
 }
 
@@ -42,6 +44,9 @@ void PlanarMapperApp::run() {
     live->finish(products ? products->model : products::MapModel{}, result.map);
   }
 
+  for (const std::string& w : result.warnings) {  // also with --quiet
+    std::fprintf(stderr, "planar-mapper: warning: %s\n", w.c_str());
+  }
   if (!args_->quiet) {
     std::fprintf(stderr, "planar-mapper: %zu scans, %zu points, %zu raw triangles -> %s\n",
                  result.placement.placed, result.map.size(), result.raw_triangles.size(),

@@ -69,6 +69,9 @@ struct InputStats {
   std::size_t images = 0;
   std::size_t structure_decimated = 0;
   std::size_t invalid_timestamps = 0;  ///< observations dropped: no timestamp
+  /// Odometry readings / actions and pose-laser scans not used for the
+  /// poses: a NaN or Inf in the odometry or the sensor pose.
+  std::size_t non_finite_poses = 0;
   bool leading_frame_skipped = false;
   /// Observations that play no role, by "Class:label".
   std::map<std::string, std::size_t> ignored;

@@ -12,8 +12,9 @@
 //  - truncated plain or gzip file (a record cut short, or a gzip stream that
 //    ends without its trailer);
 //  - corrupt data (gzip CRC or deflate errors, unknown classes, impossible
-//    sizes: a single allocation above `max_allocation_mb` while decoding a
-//    record is reported as corruption instead of reserving gigabytes).
+//    sizes: a single allocation above `max_allocation_mb`, or more than
+//    `max_record_mb` in all, while decoding a record is reported as
+//    corruption instead of reserving gigabytes).
 // With `accept_truncated`, a truncated tail is not an error: the complete
 // records before it are delivered and truncated() reports what was dropped.
 #pragma once
@@ -31,7 +32,9 @@ struct RawlogReaderOptions {
   /// Deliver the complete records of a truncated file instead of failing.
   bool accept_truncated = false;
   /// Largest single allocation (MiB) allowed while decoding one record.
-  std::size_t max_allocation_mb = 1024;
+  std::size_t max_allocation_mb = 256;
+  /// Most memory (MiB) all allocations of one record may ask for together.
+  std::size_t max_record_mb = 512;
 };
 
 struct RawlogRecord {

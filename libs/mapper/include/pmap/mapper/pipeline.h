@@ -64,6 +64,9 @@ struct MappingResult {
   /// What actually ran: online, offline, raw (online falls back to offline
   /// for unorganised clouds, which have no scan order).
   std::string em_mode;
+  /// Outcomes worth a warning (printed, and listed in summary.json), e.g.
+  /// "nothing found" (doc/robustness.md).
+  std::vector<std::string> warnings;
   double duration() const { return last_time > first_time ? last_time - first_time : 0.0; }
 };
 
@@ -72,5 +75,10 @@ struct MappingResult {
 /// map), ProcessingError.
 MappingResult runPipeline(const MapperConfig& config, const MapperArgs& args,
                           LiveView* live = nullptr);
+
+/// "Nothing found" (doc/robustness.md): a run that read its input correctly
+/// but kept no structure point, or found no planar surface, is not an error.
+/// It exits 0 with valid, empty outputs; this adds the warning that says so.
+void noteNothingFound(const MapperArgs& args, MappingResult& result);
 
 }  // namespace pmap::mapper

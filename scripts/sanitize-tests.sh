@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Builds everything with AddressSanitizer + UndefinedBehaviorSanitizer (+
+# float-cast-overflow; -DPMAP_SANITIZE=ON) in ./build-asan (or
+# $ASAN_BUILD_DIR) and runs the unit and robustness tests there (ctest -L
+# 'unit|robustness'; the
+# end-to-end tests on simulated worlds, real data, the browser and the GUI
+# are left to the ordinary build, doc/robustness.md). Every sanitizer report
+# aborts the program that made it, so its test fails, and so does this script.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build_dir="${ASAN_BUILD_DIR:-build-asan}"
+jobs="${JOBS:-$(nproc)}"
+
+cmake -S . -B "$build_dir" -DPMAP_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1"
+cmake --build "$build_dir" -j"$jobs"
+
+# Leaks inside third-party libraries only are suppressed (the file says which).
+# allocator_may_return_null: a huge malloc fails as it does without ASan
+# (OpenCV's cv::Mat::create for a corrupted image size then throws, and the
+# reader reports a corrupt record) instead of being reported.
+export ASAN_OPTIONS="allocator_may_return_null=1:abort_on_error=1:detect_leaks=1:check_initialization_order=1:detect_stack_use_after_return=1:strict_string_checks=1:quarantine_size_mb=64"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
+
+log="$build_dir/ctest-sanitize.log"
+status=0
+ctest --test-dir "$build_dir" -L 'unit|robustness' --output-on-failure -j"$jobs" --timeout 900 2>&1 |
+  tee "$log" || status=$?
+# Belt and braces: a report that did not fail its test still fails the run.
+if grep -qE 'ERROR: (AddressSanitizer|LeakSanitizer)|runtime error:' "$log"; then
+  echo "sanitize-tests: sanitizer report(s) in $log" >&2
+  status=1
+fi
+exit "$status"
