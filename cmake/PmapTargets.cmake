@@ -14,6 +14,12 @@ function(pmap_target_defaults target)
     target_compile_options(${target} PRIVATE
       -fsanitize=${sanitizers} -fno-omit-frame-pointer -fno-sanitize-recover=all)
     target_link_options(${target} PUBLIC -fsanitize=address,undefined,float-cast-overflow)
+    # Eigen stops trusting malloc's 16-byte alignment under ASan and then
+    # frees with its own header, while Ceres, MRPT and OpenCV (built without
+    # ASan) allocate with plain malloc: matrices crossing the boundary (a
+    # ceres::GradientChecker::ProbeResults) were freed wrongly. Both mallocs
+    # align to 16 bytes on x86-64: keep Eigen's ABI the same as theirs.
+    target_compile_definitions(${target} PUBLIC EIGEN_MALLOC_ALREADY_ALIGNED=1)
   endif()
 endfunction()
 
