@@ -2,6 +2,7 @@
 // structure scans of the simulated default world (true poses), then map-eval
 // on its output directory. Sanity of the figures, no timings.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -21,7 +22,10 @@ const fs::path kSim = PMAP_SIM_DIR;
 class Baselines : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    out_ = new fs::path(testing::freshTestDir("baselines"));
+    // One directory per process: ctest runs each test of the suite in its
+    // own process, in parallel; a shared directory raced (setup failed and
+    // gtest reported the tests as skipped).
+    out_ = new fs::path(testing::freshTestDir("baselines_" + std::to_string(::getpid())));
     ASSERT_EQ(testing::runMain(&planarMapperMain, "planar-mapper",
                                {"--rawlog", (kSim / "default-obs.rawlog").string(), "--poses",
                                 (kSim / "default-obs.poses.txt").string(), "--to-index", "600",
