@@ -54,6 +54,51 @@ TEST(CoverageCut, AnLIsCutInTwoWhereTheLargerPartIsLargest) {
   EXPECT_NEAR(cut->estimated_gain, 20.0 * 18.0 - 200.0, 20.0);
 }
 
+// A ceiling continued around a corner: a 30 m x 2.2 m leg, whose outer
+// corner the turning robot's scans did not reach (a 3 m triangle), and the
+// first 0.7 m of the next leg at its end. Eq. (29)'s rectangle around the L
+// is turned by the appendage, so no cut along its own axes separates the
+// legs; the cut is searched in the refitted parts' frame.
+TEST(CoverageCut, AnLWhoseRectangleTheAppendageTurnedIsCutIntoItsLegs) {
+  testing::Cloud c;
+  std::mt19937_64 rng(3);
+  testing::addPlane(
+      c, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 30.0, 2.9, 0.1, 0.0, rng, 0,
+      [](double x, double y) { return (y <= 2.2 + 1e-9 || x >= 27.8 - 1e-9) && y >= x - 27.0; });
+  const auto members = allIndices(c.points.size());
+  Rectangle turned = box(0, 30, 0, 2.9);
+  ASSERT_EQ(fitRectangle(c.points, members, turned), FitStatus::kOk);
+  ASSERT_GT(std::abs(turned.axis_u.y()), std::sin(1.0 * M_PI / 180.0));  // the premise
+  const std::vector<double> loss(members.size(), 5.0);
+  const auto cut = coverageCut(c.points, members, loss, turned, 0.15, 20.0, 200.0, 60, true);
+  ASSERT_TRUE(cut.has_value());
+  EXPECT_EQ(cut->keep, CutKeep::kBoth);
+  const auto& a = cut->parts.part_a;
+  const auto& b = cut->parts.part_b;
+  const auto& leg = a.size() > b.size() ? a : b;
+  const auto& appendage = a.size() > b.size() ? b : a;
+  // The cut runs along a true axis: across the leg where the corner begins,
+  // or along the leg's side.
+  auto extent = [&](const std::vector<std::int32_t>& part, int axis) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (const std::int32_t i : part) {
+      lo = std::min(lo, c.points[static_cast<std::size_t>(i)][axis]);
+      hi = std::max(hi, c.points[static_cast<std::size_t>(i)][axis]);
+    }
+    return std::make_pair(lo, hi);
+  };
+  const bool across = extent(leg, 0).second < extent(appendage, 0).first;
+  const bool along = extent(leg, 1).second < extent(appendage, 1).first;
+  EXPECT_TRUE(across || along);
+  EXPECT_GE(extent(appendage, 0).first, 27.0);
+  // Refitted alone, each part is a full rectangle along the true axes.
+  for (const auto* part : {&leg, &appendage}) {
+    Rectangle r = turned;
+    ASSERT_EQ(fitRectangle(c.points, *part, r), FitStatus::kOk);
+    EXPECT_LT(std::min(std::abs(r.axis_u.x()), std::abs(r.axis_u.y())), 1e-6);
+  }
+}
+
 TEST(CoverageCut, ADenseRectangleWithASparseStripIsTrimmed) {
   testing::Cloud c;
   std::mt19937_64 rng(2);

@@ -140,6 +140,9 @@ bool OnlineEm::trySplit(std::int32_t j) {
       options.push_back({c->keep == CutKeep::kPartA ? c->parts.part_a : c->parts.part_b});
     }
   }
+  // The option that raises the posterior most (by more than min_gain).
+  double best_gain = options_.min_gain;
+  std::vector<Rectangle> best;
   for (const auto& parts : options) {
     std::vector<Rectangle> rects;
     for (const auto& part : parts) {
@@ -166,25 +169,28 @@ bool OnlineEm::trySplit(std::int32_t j) {
       }
       gain += (now - model_.surfaceScore(s.rect.squaredDistance(p))) * scale;
     }
-    if (gain <= options_.min_gain) {
-      continue;
+    if (gain > best_gain) {
+      best_gain = gain;
+      best = std::move(rects);
     }
-    // Apply: the surface becomes the first part; every member is re-derived.
-    const std::vector<std::int32_t> members = s.members;
-    s.rect = rects[0];
-    s.trimmed = s.trimmed || rects.size() == 1;
-    s.id = next_id_++;
-    s.hull.clear();
-    index_.update(j, s.rect);
-    if (rects.size() > 1) {
-      createSurface(rects[1], {});
-    }
-    for (const std::int32_t i : members) {
-      assign(static_cast<std::size_t>(i), evaluate(static_cast<std::size_t>(i)).best);
-    }
-    return true;
   }
-  return false;
+  if (best.empty()) {
+    return false;
+  }
+  // Apply: the surface becomes the first part; every member is re-derived.
+  const std::vector<std::int32_t> members = s.members;
+  s.rect = best[0];
+  s.trimmed = s.trimmed || best.size() == 1;
+  s.id = next_id_++;
+  s.hull.clear();
+  index_.update(j, s.rect);
+  if (best.size() > 1) {
+    createSurface(best[1], {});
+  }
+  for (const std::int32_t i : members) {
+    assign(static_cast<std::size_t>(i), evaluate(static_cast<std::size_t>(i)).best);
+  }
+  return true;
 }
 
 }  // namespace pmap::em

@@ -5,6 +5,8 @@
 #include <limits>
 #include <map>
 
+#include "pmap/em/min_area_rectangle.h"
+
 namespace pmap::em {
 namespace {
 
@@ -196,16 +198,106 @@ CutAreas cutAreas(const std::vector<int>& line_of_cell, const std::vector<int>& 
   return out;
 }
 
-}  // namespace
+// How much smaller than their bounding boxes in the grid's frame the parts
+// before / after each cut become when refitted (eq. 29: each part's own
+// minimum-area rectangle), in cells; 0 for parts aligned with the grid. A
+// rectangle fitted around an L (a ceiling continued around a corner) is turned
+// by the appendage, so in its frame neither leg looks rectangular, while
+// each leg refitted alone is. Prefix (suffix) hulls grow one line at a time:
+// each step merges two small hulls.
+struct RefitSavings {
+  std::vector<double> low, high;  ///< per cut position k, as CutAreas
+  double whole = 0;
+};
 
-std::optional<CoverageCut> coverageCut(const std::vector<Eigen::Vector3d>& points,
-                                       const std::vector<std::int32_t>& members,
-                                       const std::vector<double>& member_loss,
-                                       const Rectangle& rect, double cell_m, double empty_area_cost,
-                                       double kappa, std::size_t min_part, bool allow_trims) {
-  if (members.size() < min_part) {
+RefitSavings refitSavings(const std::vector<Eigen::Vector2d>& uv,
+                          const std::vector<int>& line_of_member, int lines, double cell_area) {
+  const auto n_lines = static_cast<std::size_t>(lines);
+  std::vector<std::vector<Eigen::Vector2d>> line_hull(n_lines);
+  for (std::size_t m = 0; m < uv.size(); ++m) {
+    line_hull[static_cast<std::size_t>(line_of_member[m])].push_back(uv[m]);
+  }
+  for (auto& h : line_hull) {
+    h = convexHull(std::move(h));
+  }
+  auto saving = [&](const std::vector<Eigen::Vector2d>& hull) {
+    if (hull.size() < 3) {
+      return 0.0;
+    }
+    Eigen::Vector2d lo = hull.front(), hi = hull.front();
+    for (const Eigen::Vector2d& q : hull) {
+      lo = lo.cwiseMin(q);
+      hi = hi.cwiseMax(q);
+    }
+    const double box = (hi - lo).prod();
+    return std::max(0.0, box - minAreaRectangle(hull).area()) / cell_area;
+  };
+  RefitSavings out;
+  out.low.assign(n_lines + 1, 0.0);
+  out.high.assign(n_lines + 1, 0.0);
+  std::vector<Eigen::Vector2d> hull;
+  for (std::size_t l = 0; l < n_lines; ++l) {  // lines [0, l]: the part before l + 1
+    hull.insert(hull.end(), line_hull[l].begin(), line_hull[l].end());
+    hull = convexHull(std::move(hull));
+    out.low[l + 1] = saving(hull);
+  }
+  out.whole = out.low[n_lines];
+  hull.clear();
+  for (std::size_t l = n_lines; l-- > 0;) {  // lines [l, end): the part from l
+    hull.insert(hull.end(), line_hull[l].begin(), line_hull[l].end());
+    hull = convexHull(std::move(hull));
+    out.high[l] = saving(hull);
+  }
+  return out;
+}
+
+// The rectangle in `rect`'s plane with the in-plane axes of the minimum-area
+// rectangle of `part`, bounding all of `members`; none when those axes are
+// already `rect`'s (within 0.2 degrees) or `part` is degenerate.
+std::optional<Rectangle> frameAlong(const std::vector<Eigen::Vector3d>& points,
+                                    const std::vector<std::int32_t>& part,
+                                    const std::vector<std::int32_t>& members,
+                                    const Rectangle& rect) {
+  const Eigen::Vector3d v = rect.axisV();
+  auto project = [&](const std::vector<std::int32_t>& ids) {
+    std::vector<Eigen::Vector2d> uv;
+    uv.reserve(ids.size());
+    for (const std::int32_t i : ids) {
+      const Eigen::Vector3d d = points[static_cast<std::size_t>(i)] - rect.centre;
+      uv.emplace_back(rect.axis_u.dot(d), v.dot(d));
+    }
+    return uv;
+  };
+  const Rect2D r = minAreaRectangle(project(part));
+  const Eigen::Vector2d a = r.axis;
+  if (r.area() <= 0.0 ||
+      std::min(std::abs(a.x()), std::abs(a.y())) < std::sin(0.2 * M_PI / 180.0)) {
     return std::nullopt;
   }
+  const Eigen::Vector2d b(-a.y(), a.x());
+  Eigen::Vector2d lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
+  for (const Eigen::Vector2d& q : project(members)) {
+    const Eigen::Vector2d f(a.dot(q), b.dot(q));
+    lo = lo.cwiseMin(f);
+    hi = hi.cwiseMax(f);
+  }
+  Rectangle frame = rect;
+  frame.axis_u = (a.x() * rect.axis_u + a.y() * v).normalized();
+  const Eigen::Vector3d fv = rect.normal.cross(frame.axis_u);
+  const Eigen::Vector2d mid = 0.5 * (lo + hi);
+  frame.centre = rect.centre + frame.axis_u * mid.x() + fv * mid.y();
+  frame.half_u = 0.5 * (hi.x() - lo.x());
+  frame.half_v = 0.5 * (hi.y() - lo.y());
+  return frame;
+}
+
+// The best coverage cut along the axes of `rect` (see coverageCut).
+std::optional<CoverageCut> coverageCutInFrame(const std::vector<Eigen::Vector3d>& points,
+                                              const std::vector<std::int32_t>& members,
+                                              const std::vector<double>& member_loss,
+                                              const Rectangle& rect, double cell_m,
+                                              double empty_area_cost, double kappa,
+                                              std::size_t min_part, bool allow_trims) {
   const CellGrid g = gridOf(points, members, rect, cell_m);
   const std::size_t cells = static_cast<std::size_t>(g.rows) * static_cast<std::size_t>(g.cols);
   std::vector<char> occupied(cells, 0);
@@ -213,6 +305,13 @@ std::optional<CoverageCut> coverageCut(const std::vector<Eigen::Vector3d>& point
     occupied[static_cast<std::size_t>(c)] = 1;
   }
   const double cell_area = cell_m * cell_m;
+  const Eigen::Vector3d axis_v = rect.axisV();
+  std::vector<Eigen::Vector2d> uv;
+  uv.reserve(members.size());
+  for (const std::int32_t i : members) {
+    const Eigen::Vector3d d = points[static_cast<std::size_t>(i)] - rect.centre;
+    uv.emplace_back(rect.axis_u.dot(d), axis_v.dot(d));
+  }
   std::optional<CoverageCut> best;
   for (const bool along_u : {true, false}) {
     const int lines = along_u ? g.cols : g.rows;
@@ -223,7 +322,12 @@ std::optional<CoverageCut> coverageCut(const std::vector<Eigen::Vector3d>& point
       line_of[c] = along_u ? k : r;
       across_of[c] = along_u ? r : k;
     }
+    std::vector<int> line_of_member(members.size());
+    for (std::size_t m = 0; m < members.size(); ++m) {
+      line_of_member[m] = line_of[static_cast<std::size_t>(g.cell_of[m])];
+    }
     const CutAreas areas = cutAreas(line_of, across_of, occupied, lines);
+    const RefitSavings refit = refitSavings(uv, line_of_member, lines, cell_area);
     // Members and loss per line, then prefix sums.
     std::vector<double> loss_prefix(static_cast<std::size_t>(lines) + 1, 0.0);
     std::vector<std::size_t> count_prefix(static_cast<std::size_t>(lines) + 1, 0);
@@ -241,9 +345,9 @@ std::optional<CoverageCut> coverageCut(const std::vector<Eigen::Vector3d>& point
       const auto ku = static_cast<std::size_t>(k);
       const std::size_t n_low = count_prefix[ku];
       const std::size_t n_high = members.size() - n_low;
-      const double lo = areas.empty_low[ku];
-      const double hi = areas.empty_high[ku];
-      const double whole = areas.empty_whole;
+      const double lo = std::max(0.0, areas.empty_low[ku] - refit.low[ku]);
+      const double hi = std::max(0.0, areas.empty_high[ku] - refit.high[ku]);
+      const double whole = std::max(0.0, areas.empty_whole - refit.whole);
       struct Option {
         CutKeep keep;
         double gain;
@@ -277,6 +381,36 @@ std::optional<CoverageCut> coverageCut(const std::vector<Eigen::Vector3d>& point
         cut.parts = partition(members, g.cell_of, in_a);
         best = std::move(cut);
       }
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+std::optional<CoverageCut> coverageCut(const std::vector<Eigen::Vector3d>& points,
+                                       const std::vector<std::int32_t>& members,
+                                       const std::vector<double>& member_loss,
+                                       const Rectangle& rect, double cell_m, double empty_area_cost,
+                                       double kappa, std::size_t min_part, bool allow_trims) {
+  if (members.size() < min_part) {
+    return std::nullopt;
+  }
+  std::optional<CoverageCut> best = coverageCutInFrame(
+      points, members, member_loss, rect, cell_m, empty_area_cost, kappa, min_part, allow_trims);
+  if (!best) {
+    return best;
+  }
+  // The cut's larger part gives the frame of the data's dominant piece (a
+  // ceiling's first leg, free of the appendage that turned `rect`): search
+  // again along its axes, where an L can be cut either way and the tie rule
+  // keeps its canonical form.
+  const SplitProposal& p = best->parts;
+  const auto& larger = p.part_a.size() >= p.part_b.size() ? p.part_a : p.part_b;
+  if (const auto frame = frameAlong(points, larger, members, rect)) {
+    if (auto again = coverageCutInFrame(points, members, member_loss, *frame, cell_m,
+                                        empty_area_cost, kappa, min_part, allow_trims)) {
+      return again;
     }
   }
   return best;
