@@ -98,6 +98,29 @@ bool OnlineEm::tryFuse(std::int32_t j) {
   return false;
 }
 
+// Whether some member of surface j would be explained neither by `kept` (j's
+// rectangle after a trim) nor by another surface better than by the outlier
+// class.
+bool OnlineEm::leavesUnexplained(std::int32_t j, const Rectangle& kept) const {
+  const double s_star = model_.outlierScore();
+  std::vector<std::int32_t> cand;
+  for (const std::int32_t i : surfaces_[static_cast<std::size_t>(j)].members) {
+    const Eigen::Vector3d& p = points_[static_cast<std::size_t>(i)];
+    if (model_.surfaceScore(kept.squaredDistance(p)) > s_star) {
+      continue;
+    }
+    index_.candidates(p, cand);
+    const bool elsewhere = std::any_of(cand.begin(), cand.end(), [&](std::int32_t k) {
+      return k != j && model_.surfaceScore(
+                           surfaces_[static_cast<std::size_t>(k)].rect.squaredDistance(p)) > s_star;
+    });
+    if (!elsewhere) {
+      return true;
+    }
+  }
+  return false;
+}
+
 bool OnlineEm::trySplit(std::int32_t j) {
   OnlineSurface& s = surfaces_[static_cast<std::size_t>(j)];
   if (s.members.size() < 2 * static_cast<std::size_t>(options_.min_support)) {
@@ -132,8 +155,20 @@ bool OnlineEm::trySplit(std::int32_t j) {
            points_, sample, s.rect, cell, options_.split_min_offset_m, model_.sigma(), min_part)) {
     options.push_back({p.part_a, p.part_b});
   }
-  if (auto c = coverageCut(points_, sample, loss, s.rect, cell, options_.empty_area_cost,
-                           options_.kappa, min_part, !s.trimmed)) {
+  auto c = coverageCut(points_, sample, loss, s.rect, cell, options_.empty_area_cost,
+                       options_.kappa, min_part, true);
+  // A surface is trimmed of points it leaves unexplained at most once: the
+  // outlier band would let it win them back, regrow and re-trim it forever.
+  // Handing points over to the surfaces that explain them can be repeated.
+  if (c && c->keep != CutKeep::kBoth && s.trimmed) {
+    Rectangle kept = s.rect;
+    const auto& part = c->keep == CutKeep::kPartA ? c->parts.part_a : c->parts.part_b;
+    if (fitSurface(points_, part, kept) != FitStatus::kOk || leavesUnexplained(j, kept)) {
+      c = coverageCut(points_, sample, loss, s.rect, cell, options_.empty_area_cost, options_.kappa,
+                      min_part, false);
+    }
+  }
+  if (c) {
     if (c->keep == CutKeep::kBoth) {
       options.push_back({c->parts.part_a, c->parts.part_b});
     } else {
@@ -182,7 +217,9 @@ bool OnlineEm::trySplit(std::int32_t j) {
   s.rect = best[0];
   s.trimmed = s.trimmed || best.size() == 1;
   s.id = next_id_++;
-  s.hull.clear();
+  // The hull is kept: its points that stay members still bound the next
+  // M-step's rectangle (a capped random subsample alone would shrink it
+  // where the surface is sparsely seen, e.g. a ceiling's corner).
   index_.update(j, s.rect);
   if (best.size() > 1) {
     createSurface(best[1], {});
