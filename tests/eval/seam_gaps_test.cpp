@@ -80,12 +80,15 @@ TEST(SeamSides, GapIsPositiveShortOfTheSeamAndNegativeBeyondIt) {
   ceiling.corners[2].x() += 0.03;
   ceiling.corners[3].x() += 0.03;
   for (const SeamSide& s : seamSides(gt, primary)) {
-    if (s.gt_id == 1 && s.gt_other == 2)
+    if (s.gt_id == 1 && s.gt_other == 2) {
       EXPECT_NEAR(s.gap_m, 0.05, 1e-9);
-    if (s.gt_id == 2 && s.gt_other == 3)
+    }
+    if (s.gt_id == 2 && s.gt_other == 3) {
       EXPECT_NEAR(s.gap_m, -0.03, 1e-9);
-    if (s.gt_id == 2 && s.gt_other == 1)
+    }
+    if (s.gt_id == 2 && s.gt_other == 1) {
       EXPECT_NEAR(s.gap_m, 0.0, 1e-9);
+    }
   }
 }
 
@@ -93,6 +96,33 @@ TEST(SeamSides, UnmatchedSurfacesHaveNoSides) {
   const GroundTruth gt = corridor();
   std::vector<std::pair<int, MapSurface>> primary = {{1, mapSurfaceOf(gt.surfaces[0], 1)}};
   EXPECT_TRUE(seamSides(gt, primary).empty());
+}
+
+// A door in a wall: its top and sides bound the wall's opening, its foot on
+// the floor does not; a rectangle without a parent, or one not parallel to
+// it, has no opening edges.
+TEST(OpeningEdges, ADoorsTopAndSidesButNotItsFoot) {
+  testing::SurfaceTestWorld w;
+  w.addRectangle(1, "wall", rectangle(V(0, 0, 0), V(6, 0, 0), V(0, 0, 2.7)));
+  w.addRectangle(2, "door", rectangle(V(2, -0.1, 0), V(0.9, 0, 0), V(0, 0, 2.0)));
+  w.gt.surfaces.back().parent = 1;
+  w.addRectangle(3, "wall", rectangle(V(6, 0, 0), V(0, 2, 0), V(0, 0, 2.7)));
+  w.gt.surfaces.back().parent = 1;  // perpendicular: no opening
+  const auto edges = openingEdges(w.gt, {1, 2, 3});
+  ASSERT_EQ(edges.size(), 3u);
+  for (const GtSeam& e : edges) {
+    EXPECT_EQ(e.gt_id, 2);
+    EXPECT_EQ(e.gt_other, 1);
+    EXPECT_NE(e.edge, 0);  // edge 0 joins (2, -0.1, 0) and (2.9, -0.1, 0): the foot
+  }
+  // The door's clipped reference (what the laser saw: 8 cm short of the
+  // jambs, from 0.3 m up) closes to the opening, not down to the floor.
+  const GtRectangle& door = w.gt.surfaces[1];
+  const std::array<Eigen::Vector3d, 4> clipped = {V(2.08, -0.1, 0.3), V(2.82, -0.1, 0.3),
+                                                  V(2.82, -0.1, 1.97), V(2.08, -0.1, 1.97)};
+  const auto closed = closedReference(door, clipped, edges, 0.3);
+  EXPECT_LT((closed[0] - V(2.0, -0.1, 0.3)).norm(), 1e-12);
+  EXPECT_LT((closed[2] - V(2.9, -0.1, 2.0)).norm(), 1e-12);
 }
 
 }  // namespace

@@ -53,6 +53,8 @@ TEST(Refinement, OfflineTruePosesClosesTheSeamsWithoutTurningPlanes) {
   EXPECT_GE(r["seams"].size(), 10u);
   EXPECT_TRUE(r["reverted_ids"].empty());
   EXPECT_LT(r["final_cost"].get<double>(), r["initial_cost"].get<double>());
+  // The world's 8 recessed doors end on their walls' openings.
+  EXPECT_EQ(r["openings"].size(), 8u);
 
   const json& a = em.eval;
   const json& b = refined.eval;
@@ -74,6 +76,8 @@ TEST(Refinement, OnlineModeIsRefinedToo) {
   EXPECT_TRUE(refined.summary["refinement"]["ran"].get<bool>());
   EXPECT_GE(refined.summary["timing_s"]["refine"].get<double>(), 0.0);
   EXPECT_EQ(refined.eval["matched_surfaces"], refined.eval["gt_surfaces"]);
+  EXPECT_LE(refined.eval["seam_gap_m"]["mean"].get<double>(), 0.01);
+  EXPECT_LE(refined.eval["corner_error_closed_m"]["mean"].get<double>(), 0.02);
 }
 
 }  // namespace

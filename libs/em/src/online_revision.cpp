@@ -3,6 +3,7 @@
 // its wall is split off by later data and its early points change surface.
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <set>
 
 #include "pmap/em/model_selection.h"
@@ -73,6 +74,9 @@ bool OnlineEm::tryFuse(std::int32_t j) {
                                    static_cast<double>(sample.size());
     }
     if (gain <= options_.min_gain) {
+      if (tryRecut(j, k)) {
+        return true;
+      }
       continue;
     }
     const std::vector<std::int32_t> all = merged(a.members, b.members);
@@ -81,6 +85,9 @@ bool OnlineEm::tryFuse(std::int32_t j) {
             (emptyArea(points_, a.members, a.rect, cell) +
              emptyArea(points_, b.members, b.rect, cell) - emptyArea(points_, all, m, cell));
     if (gain <= options_.min_gain) {
+      if (tryRecut(j, k)) {
+        return true;
+      }
       continue;
     }
     const std::vector<std::int32_t> moving = b.members;
@@ -96,6 +103,104 @@ bool OnlineEm::tryFuse(std::int32_t j) {
     return true;
   }
   return false;
+}
+
+// Two coplanar neighbours that fusion keeps apart (an L: a ceiling around a
+// corner) are brought into the canonical form the offline fusion step gives
+// them: the larger surface runs through the corner. It takes the other's
+// members that lie within its own width (across its long axis), when they
+// lie on its plane (90 % within 2.5 sigma) and are clearly many (5 % of its own members:
+// the corner square, not a fringe), some stay with the other surface, and
+// the two rectangles refitted around their points leave no more empty area.
+bool OnlineEm::tryRecut(std::int32_t j, std::int32_t k) {
+  OnlineSurface& a = surfaces_[static_cast<std::size_t>(j)];
+  OnlineSurface& b = surfaces_[static_cast<std::size_t>(k)];
+  OnlineSurface& big = a.members.size() >= b.members.size() ? a : b;
+  OnlineSurface& other = &big == &a ? b : a;
+  const auto target = static_cast<std::int32_t>(&big == &a ? j : k);
+  const auto source = static_cast<std::int32_t>(&big == &a ? k : j);
+  const int cap = online_.selection_sample_cap / 2;
+  std::vector<std::int32_t> big_pts;  // a subsample and the hull: the extent
+  for (const std::int32_t i : merged(sampleMembers(big, cap), big.hull)) {
+    if (best_[static_cast<std::size_t>(i)] == target) {
+      big_pts.push_back(i);
+    }
+  }
+  // The larger surface's width where it meets the other (its members within
+  // 1 m of that end, so that a rectangle turned by a fraction of a degree
+  // does not narrow it there).
+  const Rectangle& r = big.rect;
+  const bool long_u = r.half_u >= r.half_v;
+  const Eigen::Vector3d along = long_u ? r.axis_u : r.axisV();
+  const Eigen::Vector3d across = long_u ? r.axisV() : r.axis_u;
+  const double end =
+      (along.dot(other.rect.centre - r.centre) >= 0 ? 1.0 : -1.0) * std::max(r.half_u, r.half_v);
+  double lo = INFINITY, hi = -INFINITY;
+  for (const std::int32_t i : big_pts) {
+    const Eigen::Vector3d d = points_[static_cast<std::size_t>(i)] - r.centre;
+    if (std::abs(along.dot(d) - end) <= 1.0) {
+      lo = std::min(lo, across.dot(d));
+      hi = std::max(hi, across.dot(d));
+    }
+  }
+  if (!(hi > lo)) {
+    return false;
+  }
+  std::vector<std::int32_t> moving;
+  std::size_t on_plane = 0;
+  for (const std::int32_t i : other.members) {
+    const Eigen::Vector3d& p = points_[static_cast<std::size_t>(i)];
+    const double c = across.dot(p - r.centre);
+    if (c >= lo - model_.sigma() && c <= hi + model_.sigma()) {
+      moving.push_back(i);
+      on_plane += std::abs(r.planeDistance(p)) <= 2.5 * model_.sigma() ? 1 : 0;
+    }
+  }
+  // Coplanar: as many within 2.5 sigma of the plane as noise puts there.
+  if (on_plane * 10 < moving.size() * 9) {
+    return false;
+  }
+  if (moving.size() * 20 < big.members.size() || moving.size() * 10 > other.members.size() * 9) {
+    return false;
+  }
+  std::sort(moving.begin(), moving.end());
+  std::vector<std::int32_t> staying, others = other.members;
+  std::sort(others.begin(), others.end());
+  std::set_difference(others.begin(), others.end(), moving.begin(), moving.end(),
+                      std::back_inserter(staying));
+  // Rectangles from subsamples plus the moved points and the hulls (the
+  // extent), as the online M-step fits them.
+  std::vector<std::int32_t> other_pts;
+  big_pts.insert(big_pts.end(), moving.begin(), moving.end());
+  for (const std::int32_t i : merged(sampleMembers(other, cap), other.hull)) {
+    if (best_[static_cast<std::size_t>(i)] == source &&
+        !std::binary_search(moving.begin(), moving.end(), i)) {
+      other_pts.push_back(i);
+    }
+  }
+  Rectangle r_big = big.rect, r_other = other.rect;
+  if (other_pts.size() < 3 || fitRectangle(points_, big_pts, r_big) != FitStatus::kOk ||
+      fitRectangle(points_, other_pts, r_other) != FitStatus::kOk) {
+    return false;
+  }
+  const double cell = options_.split_cell_m;
+  const double before = emptyArea(points_, big.members, big.rect, cell) +
+                        emptyArea(points_, other.members, other.rect, cell);
+  const double after = emptyArea(points_, merged(big.members, moving), r_big, cell) +
+                       emptyArea(points_, staying, r_other, cell);
+  if (after > before + options_.min_gain / options_.empty_area_cost) {
+    return false;
+  }
+  big.rect = r_big;
+  other.rect = r_other;
+  big.id = next_id_++;
+  other.id = next_id_++;
+  index_.update(j, a.rect);
+  index_.update(k, b.rect);
+  for (const std::int32_t i : moving) {
+    assign(static_cast<std::size_t>(i), target);
+  }
+  return true;
 }
 
 // Whether some member of surface j would be explained neither by `kept` (j's

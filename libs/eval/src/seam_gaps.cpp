@@ -103,6 +103,34 @@ std::vector<GtSeam> groundTruthSeams(const GroundTruth& gt, const std::vector<in
   return seams;
 }
 
+std::vector<GtSeam> openingEdges(const GroundTruth& gt, const std::vector<int>& ids,
+                                 const SeamOptions& options) {
+  const double min_cos = std::cos(options.min_angle_deg * kDegToRad);
+  std::vector<GtSeam> out;
+  for (const int id : ids) {
+    const GtRectangle* door = gt.surface(id);
+    const GtRectangle* wall = door == nullptr ? nullptr : gt.surface(door->parent);
+    if (wall == nullptr || std::abs(door->normal.dot(wall->normal)) < min_cos) {
+      continue;
+    }
+    const Plane plane = planeOf(*wall);
+    const Eigen::Vector3d u = (wall->corners[1] - wall->corners[0]).normalized();
+    const Eigen::Vector3d v = (wall->corners[3] - wall->corners[0]).normalized();
+    const double lu = (wall->corners[1] - wall->corners[0]).norm();
+    const double lv = (wall->corners[3] - wall->corners[0]).norm();
+    for (int e = 0; e < 4; ++e) {
+      const Eigen::Vector3d mid = 0.5 * (door->corners[static_cast<std::size_t>(e)] +
+                                         door->corners[static_cast<std::size_t>((e + 1) % 4)]);
+      const Eigen::Vector3d q = mid - plane.n * plane.distance(mid) - wall->corners[0];
+      const double s = q.dot(u), t = q.dot(v), m = options.on_plane_m;
+      if (s > m && s < lu - m && t > m && t < lv - m) {
+        out.push_back({id, door->parent, e});
+      }
+    }
+  }
+  return out;
+}
+
 std::array<Eigen::Vector3d, 4> closedReference(const GtRectangle& rect,
                                                const std::array<Eigen::Vector3d, 4>& clipped,
                                                const std::vector<GtSeam>& seams, double reach_m) {

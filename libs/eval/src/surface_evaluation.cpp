@@ -95,7 +95,10 @@ SurfaceEvaluation evaluateSurfaces(const GroundTruth& gt, const MapPoints& point
   for (const auto& ref : refs) {
     eligible_ids.push_back(ref.rect.id);
   }
-  const std::vector<GtSeam> seams = groundTruthSeams(gt, eligible_ids);
+  // The closed reference also closes a door's edges to its wall's opening.
+  std::vector<GtSeam> closing = groundTruthSeams(gt, eligible_ids);
+  const std::vector<GtSeam> openings = openingEdges(gt, eligible_ids);
+  closing.insert(closing.end(), openings.begin(), openings.end());
   for (const auto& ref : refs) {
     eligible.insert(ref.rect.id);
     ++e.matched_by_kind[ref.rect.kind].gt;
@@ -106,9 +109,9 @@ SurfaceEvaluation evaluateSurfaces(const GroundTruth& gt, const MapPoints& point
     }
     const std::size_t primary = it->second.front();
     primaries.emplace_back(ref.rect.id, moved[primary]);
-    addScore(
-        scoreSurface(ref, moved[primary], matches.map_surfaces[primary], it->second.size(), seams),
-        e);
+    addScore(scoreSurface(ref, moved[primary], matches.map_surfaces[primary], it->second.size(),
+                          closing),
+             e);
   }
   e.seams = seamSides(gt, primaries);
   for (const SeamSide& side : e.seams) {

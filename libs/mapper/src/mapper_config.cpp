@@ -142,6 +142,8 @@ void RefinementSection::load(config::SectionReader& r) {
   r.read("manhattan_tolerance_deg", o.manhattan_tolerance_deg);
   r.read("manhattan_sigma_deg", o.manhattan_sigma_deg);
   r.read("max_normal_change_deg", o.max_normal_change_deg);
+  r.read("openings", o.openings);
+  r.read("opening_max_angle_deg", o.opening_max_angle_deg);
 }
 
 bool PlanarEmSection::validate(std::string* why) const {

@@ -114,6 +114,13 @@ json refinementJson(const refine::RefineResult& r, const std::vector<em::Surface
                      {"other", surfaces[s.other].id},
                      {"distance_before_m", s.distance_m}});
   }
+  json openings = json::array();
+  for (const refine::Opening& o : r.openings.openings) {
+    openings.push_back({{"door", o.door_id},
+                        {"wall", o.wall_id},
+                        {"edges", o.edges},
+                        {"max_move_m", o.max_move_m}});
+  }
   return {{"ran", r.ran},
           {"message", r.message},
           {"fused_pairs", r.fusion.changed_pairs},
@@ -126,6 +133,7 @@ json refinementJson(const refine::RefineResult& r, const std::vector<em::Surface
           {"initial_cost", b.initial_cost},
           {"final_cost", b.final_cost},
           {"reverted_ids", b.reverted_ids},
+          {"openings", openings},
           {"fusion_s", r.fusion_s},
           {"solve_s", r.solve_s}};
 }

@@ -242,12 +242,23 @@ void runEm(const MapperConfig& config, const points::NeighbourGraph& graph, Mapp
   result.timing.em_s += since(t0);
 }
 
+// Each point's sensor origin (the side a surface was seen from).
+std::vector<Eigen::Vector3d> sensorOrigins(const points::PointMap& map) {
+  std::vector<Eigen::Vector3d> out(map.size());
+  for (const points::ScanRecord& s : map.scans()) {
+    const Eigen::Vector3d o(s.sensor_pose.x, s.sensor_pose.y, s.sensor_pose.z);
+    std::fill_n(out.begin() + static_cast<std::ptrdiff_t>(s.first_point), s.num_points, o);
+  }
+  return out;
+}
+
 // Fusion and the Ceres refinement of the EM's map (offline or online).
 void runRefinement(const MapperConfig& config, const points::NeighbourGraph& graph,
                    MappingResult& result) {
   const auto t0 = Clock::now();
-  result.refine = refine::refineMap(result.map.xyz(), graph.neighbours, graph.rows,
-                                    config.planar_em.em, config.refine, result.em->map);
+  result.refine =
+      refine::refineMap(result.map.xyz(), graph.neighbours, graph.rows, config.planar_em.em,
+                        config.refine, result.em->map, sensorOrigins(result.map));
   if (result.refine->fusion.changed_pairs > 0) {
     result.em->message +=
         "; refinement fused " + std::to_string(result.refine->fusion.changed_pairs) + " pairs";

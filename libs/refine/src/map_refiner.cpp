@@ -15,6 +15,9 @@ double since(Clock::time_point t0) {
 std::string describe(const RefineResult& r) {
   std::string m = std::to_string(r.fusion.changed_pairs) + " pairs fused, " +
                   std::to_string(r.boundaries.seams.size()) + " seams, " + r.boundaries.termination;
+  if (!r.openings.openings.empty()) {
+    m += ", " + std::to_string(r.openings.openings.size()) + " doors on their openings";
+  }
   if (!r.boundaries.reverted_ids.empty()) {
     m += ", " + std::to_string(r.boundaries.reverted_ids.size()) + " surfaces kept unrefined";
   }
@@ -25,7 +28,8 @@ std::string describe(const RefineResult& r) {
 
 RefineResult refineMap(const std::vector<Eigen::Vector3d>& points, const em::Neighbours& neighbours,
                        const std::vector<std::int32_t>& rows, const em::PlanarEmOptions& em,
-                       const RefineOptions& options, em::PlanarMap& map) {
+                       const RefineOptions& options, em::PlanarMap& map,
+                       const std::vector<Eigen::Vector3d>& viewpoints) {
   RefineResult result;
   if (!options.enabled || map.surfaces.empty()) {
     result.message = options.enabled ? "no surfaces" : "disabled";
@@ -44,6 +48,9 @@ RefineResult refineMap(const std::vector<Eigen::Vector3d>& points, const em::Nei
   result.boundaries =
       refineBoundaries(points, samplesFromResponsibilities(resp, map.surfaces.size()), em.sigma_m,
                        options, map.surfaces);
+  if (options.openings) {
+    result.openings = alignToOpenings(points, resp.best, viewpoints, options, map.surfaces);
+  }
   result.solve_s = since(t0);
   result.message = describe(result);
   return result;

@@ -55,6 +55,9 @@ bool RefineOptions::validate(std::string* why) const {
   }
   if (!positive(manhattan_sigma_deg))
     return fail(why, "manhattan_sigma_deg must be > 0");
+  if (!inOpen(opening_max_angle_deg, 0.0, 90.0)) {
+    return fail(why, "opening_max_angle_deg must be in (0, 90)");
+  }
   if (!positive(max_normal_change_deg))
     return fail(why, "max_normal_change_deg must be > 0");
   return true;

@@ -99,6 +99,7 @@ class OnlineEm {
   void selectRoundRobin(SelectionChanges& c);
   bool tryFuse(std::int32_t j);
   bool trySplit(std::int32_t j);
+  bool tryRecut(std::int32_t j, std::int32_t k);
   bool leavesUnexplained(std::int32_t j, const Rectangle& kept) const;
   bool validSurface(const std::vector<std::int32_t>& members, const Rectangle& rect) const;
   double hardScore(std::size_t i) const;

@@ -40,6 +40,14 @@ struct GtSeam {
 std::vector<GtSeam> groundTruthSeams(const GroundTruth& gt, const std::vector<int>& ids,
                                      const SeamOptions& options = {});
 
+/// The edges of the doors among `ids` that bound their wall's opening: a
+/// rectangle with a `parent` parallel to it, each edge whose midpoint,
+/// projected onto the parent, lies inside the parent's rectangle (more than
+/// `on_plane_m` from its boundary): the door's top and sides, not its foot
+/// on the floor. As GtSeam {door, parent, edge}, for closedReference.
+std::vector<GtSeam> openingEdges(const GroundTruth& gt, const std::vector<int>& ids,
+                                 const SeamOptions& options = {});
+
 /// The reference rectangle `clipped` (what the laser saw of `rect`, corners
 /// in rect's order) with each edge that is a shared edge of `rect` (in
 /// `seams`) moved onto it when it lies within `reach_m`: what a map that

@@ -57,6 +57,11 @@ struct RefineOptions {
   bool manhattan = false;
   double manhattan_tolerance_deg = 2.0;  ///< in (0, 45)
   double manhattan_sigma_deg = 0.001;    ///< residual scale of the snap (deg), > 0
+  /// Doors on openings (openings.h): a surface within this angle of a larger
+  /// one, behind it by at most seam_distance_m and inside its rectangle, has
+  /// its edges placed on the opening in that wall's points (deg), in (0, 90).
+  bool openings = true;
+  double opening_max_angle_deg = 10.0;
   /// A surface whose normal the solve would turn by more than this keeps the
   /// EM's geometry (a guard against a wrong seam; deg), > 0.
   double max_normal_change_deg = 2.0;
