@@ -1,6 +1,8 @@
 // Small maps for the exporter tests: a 4 x 3 x 2.5 m room corner.
 #pragma once
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <opencv2/core.hpp>
@@ -64,7 +66,9 @@ inline std::size_t texturedQuadCount(const MapModel& m) {
 
 /// An empty directory under the test tmp dir.
 inline std::filesystem::path freshDir(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::path(PMAP_TEST_TMP_DIR) / "products" / name;
+  // Per process: CTest runs the test cases of one binary in parallel.
+  const std::filesystem::path dir =
+      std::filesystem::path(PMAP_TEST_TMP_DIR) / "products" / name / std::to_string(::getpid());
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

@@ -2,6 +2,8 @@
 // and reading rawlogs back with MRPT alone.
 #pragma once
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -15,7 +17,9 @@
 namespace pmap::sim::test {
 
 inline std::filesystem::path freshDir(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::path(PMAP_TEST_TMP_DIR) / "sim" / name;
+  // Per process: CTest runs the test cases of one binary in parallel.
+  const std::filesystem::path dir =
+      std::filesystem::path(PMAP_TEST_TMP_DIR) / "sim" / name / std::to_string(::getpid());
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

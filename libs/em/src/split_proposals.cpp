@@ -291,7 +291,74 @@ std::optional<Rectangle> frameAlong(const std::vector<Eigen::Vector3d>& points,
   return frame;
 }
 
-// The best coverage cut along the axes of `rect` (see coverageCut).
+// One way to cut along the grid's lines: before line k, keeping `keep`.
+struct CutCandidate {
+  bool along_u = true;
+  int k = 0;
+  CutKeep keep = CutKeep::kBoth;
+  double gain = 0;
+  std::size_t larger = 0;  ///< members of the larger side
+};
+
+// Every cut along one axis of the grid that gains, with its estimated gain:
+// keeping both parts saves empty area at the price of kappa; keeping one
+// saves more at the price of the dropped members' loss.
+void cutsAlong(bool along_u, const CellGrid& g, const std::vector<char>& occupied,
+               const std::vector<Eigen::Vector2d>& uv, const std::vector<double>& member_loss,
+               double cell_area, double empty_area_cost, double kappa, std::size_t min_part,
+               bool allow_trims, std::vector<CutCandidate>& out) {
+  const int lines = along_u ? g.cols : g.rows;
+  const std::size_t cells = occupied.size();
+  std::vector<int> line_of(cells), across_of(cells);
+  for (std::size_t c = 0; c < cells; ++c) {
+    const int r = static_cast<int>(c) / g.cols;
+    const int k = static_cast<int>(c) % g.cols;
+    line_of[c] = along_u ? k : r;
+    across_of[c] = along_u ? r : k;
+  }
+  std::vector<int> line_of_member(uv.size());
+  // Members and loss per line, then prefix sums.
+  std::vector<double> loss_prefix(static_cast<std::size_t>(lines) + 1, 0.0);
+  std::vector<std::size_t> count_prefix(static_cast<std::size_t>(lines) + 1, 0);
+  for (std::size_t m = 0; m < uv.size(); ++m) {
+    line_of_member[m] = line_of[static_cast<std::size_t>(g.cell_of[m])];
+    const auto l = static_cast<std::size_t>(line_of_member[m]);
+    loss_prefix[l + 1] += member_loss[m];
+    ++count_prefix[l + 1];
+  }
+  for (std::size_t l = 0; l < static_cast<std::size_t>(lines); ++l) {
+    loss_prefix[l + 1] += loss_prefix[l];
+    count_prefix[l + 1] += count_prefix[l];
+  }
+  const CutAreas areas = cutAreas(line_of, across_of, occupied, lines);
+  const RefitSavings refit = refitSavings(uv, line_of_member, lines, cell_area);
+  const double whole = std::max(0.0, areas.empty_whole - refit.whole);
+  const double loss_all = loss_prefix.back();
+  for (int k = 1; k < lines; ++k) {
+    const auto ku = static_cast<std::size_t>(k);
+    const std::size_t n_low = count_prefix[ku];
+    const std::size_t n_high = uv.size() - n_low;
+    const double lo = std::max(0.0, areas.empty_low[ku] - refit.low[ku]);
+    const double hi = std::max(0.0, areas.empty_high[ku] - refit.high[ku]);
+    const std::size_t larger = std::max(n_low, n_high);
+    auto add = [&](CutKeep keep, double gain, bool ok) {
+      if (ok && gain > 0.0) {
+        out.push_back({along_u, k, keep, gain, larger});
+      }
+    };
+    add(CutKeep::kBoth, empty_area_cost * (whole - lo - hi) * cell_area - kappa,
+        n_low >= min_part && n_high >= min_part);
+    add(CutKeep::kPartA, empty_area_cost * (whole - lo) * cell_area - (loss_all - loss_prefix[ku]),
+        allow_trims && n_low >= min_part);
+    add(CutKeep::kPartB, empty_area_cost * (whole - hi) * cell_area - loss_prefix[ku],
+        allow_trims && n_high >= min_part);
+  }
+}
+
+// The best coverage cut along the axes of `rect` (see coverageCut). Near
+// ties (within two cells of empty area: an L can be cut either way, and the
+// grid's estimate differs by a cell or so between the two) go to the cut
+// leaving the larger part, the canonical form.
 std::optional<CoverageCut> coverageCutInFrame(const std::vector<Eigen::Vector3d>& points,
                                               const std::vector<std::int32_t>& members,
                                               const std::vector<double>& member_loss,
@@ -299,12 +366,11 @@ std::optional<CoverageCut> coverageCutInFrame(const std::vector<Eigen::Vector3d>
                                               double empty_area_cost, double kappa,
                                               std::size_t min_part, bool allow_trims) {
   const CellGrid g = gridOf(points, members, rect, cell_m);
-  const std::size_t cells = static_cast<std::size_t>(g.rows) * static_cast<std::size_t>(g.cols);
-  std::vector<char> occupied(cells, 0);
+  std::vector<char> occupied(static_cast<std::size_t>(g.rows) * static_cast<std::size_t>(g.cols),
+                             0);
   for (const int c : g.cell_of) {
     occupied[static_cast<std::size_t>(c)] = 1;
   }
-  const double cell_area = cell_m * cell_m;
   const Eigen::Vector3d axis_v = rect.axisV();
   std::vector<Eigen::Vector2d> uv;
   uv.reserve(members.size());
@@ -312,78 +378,37 @@ std::optional<CoverageCut> coverageCutInFrame(const std::vector<Eigen::Vector3d>
     const Eigen::Vector3d d = points[static_cast<std::size_t>(i)] - rect.centre;
     uv.emplace_back(rect.axis_u.dot(d), axis_v.dot(d));
   }
-  std::optional<CoverageCut> best;
+  const double cell_area = cell_m * cell_m;
+  std::vector<CutCandidate> cands;
   for (const bool along_u : {true, false}) {
-    const int lines = along_u ? g.cols : g.rows;
-    std::vector<int> line_of(cells), across_of(cells);
-    for (std::size_t c = 0; c < cells; ++c) {
-      const int r = static_cast<int>(c) / g.cols;
-      const int k = static_cast<int>(c) % g.cols;
-      line_of[c] = along_u ? k : r;
-      across_of[c] = along_u ? r : k;
-    }
-    std::vector<int> line_of_member(members.size());
-    for (std::size_t m = 0; m < members.size(); ++m) {
-      line_of_member[m] = line_of[static_cast<std::size_t>(g.cell_of[m])];
-    }
-    const CutAreas areas = cutAreas(line_of, across_of, occupied, lines);
-    const RefitSavings refit = refitSavings(uv, line_of_member, lines, cell_area);
-    // Members and loss per line, then prefix sums.
-    std::vector<double> loss_prefix(static_cast<std::size_t>(lines) + 1, 0.0);
-    std::vector<std::size_t> count_prefix(static_cast<std::size_t>(lines) + 1, 0);
-    for (std::size_t m = 0; m < members.size(); ++m) {
-      const auto l = static_cast<std::size_t>(line_of[static_cast<std::size_t>(g.cell_of[m])]);
-      loss_prefix[l + 1] += member_loss[m];
-      ++count_prefix[l + 1];
-    }
-    for (int l = 0; l < lines; ++l) {
-      loss_prefix[static_cast<std::size_t>(l) + 1] += loss_prefix[static_cast<std::size_t>(l)];
-      count_prefix[static_cast<std::size_t>(l) + 1] += count_prefix[static_cast<std::size_t>(l)];
-    }
-    const double loss_all = loss_prefix.back();
-    for (int k = 1; k < lines; ++k) {
-      const auto ku = static_cast<std::size_t>(k);
-      const std::size_t n_low = count_prefix[ku];
-      const std::size_t n_high = members.size() - n_low;
-      const double lo = std::max(0.0, areas.empty_low[ku] - refit.low[ku]);
-      const double hi = std::max(0.0, areas.empty_high[ku] - refit.high[ku]);
-      const double whole = std::max(0.0, areas.empty_whole - refit.whole);
-      struct Option {
-        CutKeep keep;
-        double gain;
-        bool ok;
-      };
-      const Option options[3] = {
-          {CutKeep::kBoth, empty_area_cost * (whole - lo - hi) * cell_area - kappa,
-           n_low >= min_part && n_high >= min_part},
-          {CutKeep::kPartA,
-           empty_area_cost * (whole - lo) * cell_area - (loss_all - loss_prefix[ku]),
-           allow_trims && n_low >= min_part},
-          {CutKeep::kPartB, empty_area_cost * (whole - hi) * cell_area - loss_prefix[ku],
-           allow_trims && n_high >= min_part}};
-      for (const Option& o : options) {
-        // Ties (an L cut either way) go to the cut leaving the larger part.
-        const std::size_t larger = std::max(n_low, n_high);
-        if (!o.ok || o.gain <= 0.0 ||
-            (best &&
-             (o.gain < best->estimated_gain - 1e-9 ||
-              (o.gain <= best->estimated_gain + 1e-9 &&
-               larger <= std::max(best->parts.part_a.size(), best->parts.part_b.size()))))) {
-          continue;
-        }
-        CoverageCut cut;
-        cut.keep = o.keep;
-        cut.estimated_gain = o.gain;
-        std::vector<char> in_a(cells, 0);
-        for (std::size_t c = 0; c < cells; ++c) {
-          in_a[c] = line_of[c] < k ? 1 : 0;
-        }
-        cut.parts = partition(members, g.cell_of, in_a);
-        best = std::move(cut);
-      }
+    cutsAlong(along_u, g, occupied, uv, member_loss, cell_area, empty_area_cost, kappa, min_part,
+              allow_trims, cands);
+  }
+  if (cands.empty()) {
+    return std::nullopt;
+  }
+  double top = 0;
+  for (const CutCandidate& c : cands) {
+    top = std::max(top, c.gain);
+  }
+  const double tie = 2.0 * empty_area_cost * cell_area;
+  const CutCandidate* pick = nullptr;
+  for (const CutCandidate& c : cands) {  // the first of equals: deterministic
+    if (c.gain >= top - tie && (pick == nullptr || c.larger > pick->larger ||
+                                (c.larger == pick->larger && c.gain > pick->gain))) {
+      pick = &c;
     }
   }
-  return best;
+  CoverageCut cut;
+  cut.keep = pick->keep;
+  cut.estimated_gain = pick->gain;
+  std::vector<char> in_a(occupied.size(), 0);
+  for (std::size_t c = 0; c < occupied.size(); ++c) {
+    const int line = pick->along_u ? static_cast<int>(c) % g.cols : static_cast<int>(c) / g.cols;
+    in_a[c] = line < pick->k ? 1 : 0;
+  }
+  cut.parts = partition(members, g.cell_of, in_a);
+  return cut;
 }
 
 }  // namespace
