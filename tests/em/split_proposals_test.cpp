@@ -99,6 +99,51 @@ TEST(CoverageCut, AnLWhoseRectangleTheAppendageTurnedIsCutIntoItsLegs) {
   }
 }
 
+// Two ceiling pieces in the plane z = 0: the first leg, and the second one
+// with the corner square (the non-canonical cut of an L), or something else.
+struct TwoPieces {
+  testing::Cloud c;
+  std::vector<std::int32_t> big, other;
+  Rectangle big_rect, other_rect;
+  TwoPieces(double x0, double x1, double y0, double y1, double z = 0.0) {
+    std::mt19937_64 rng(4);
+    testing::addPlane(c, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 20.0, 2.2, 0.1, 0.0, rng, 0);
+    big = allIndices(c.points.size());
+    testing::addPlane(c, {x0, y0, z}, {1, 0, 0}, {0, 1, 0}, x1 - x0, y1 - y0, 0.1, 0.0, rng, 1);
+    for (std::size_t i = big.size(); i < c.points.size(); ++i) {
+      other.push_back(static_cast<std::int32_t>(i));
+    }
+    big_rect = box(0, 20, 0, 2.2);
+    other_rect = box(x0, x1, y0, y1);
+    other_rect.centre.z() = z;
+  }
+};
+
+TEST(CornerTransfer, TheFirstLegTakesTheCornerSquareOfAnL) {
+  const TwoPieces l(20.05, 22.25, 0.0, 12.0);
+  const auto moving = cornerTransfer(l.c.points, l.big_rect, l.big, l.other_rect, l.other, 0.02);
+  ASSERT_FALSE(moving.empty());
+  for (const std::int32_t i : l.other) {
+    const bool in_square = l.c.points[static_cast<std::size_t>(i)].y() <= 2.2 + 0.02;
+    EXPECT_EQ(std::binary_search(moving.begin(), moving.end(), i), in_square) << i;
+  }
+}
+
+TEST(CornerTransfer, CollinearPiecesARoomBesideOrADoorBehindAreNoL) {
+  const TwoPieces collinear(20.05, 30.0, 0.0, 2.2);  // the corridor continued
+  EXPECT_TRUE(cornerTransfer(collinear.c.points, collinear.big_rect, collinear.big,
+                             collinear.other_rect, collinear.other, 0.02)
+                  .empty());
+  const TwoPieces room(8.0, 13.0, 0.0, 6.0);  // beside the corridor, not beyond its end
+  EXPECT_TRUE(
+      cornerTransfer(room.c.points, room.big_rect, room.big, room.other_rect, room.other, 0.02)
+          .empty());
+  const TwoPieces recessed(20.05, 22.25, 0.0, 12.0, 0.1);  // 10 cm off the plane
+  EXPECT_TRUE(cornerTransfer(recessed.c.points, recessed.big_rect, recessed.big,
+                             recessed.other_rect, recessed.other, 0.02)
+                  .empty());
+}
+
 TEST(CoverageCut, ADenseRectangleWithASparseStripIsTrimmed) {
   testing::Cloud c;
   std::mt19937_64 rng(2);

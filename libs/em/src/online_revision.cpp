@@ -126,44 +126,11 @@ bool OnlineEm::tryRecut(std::int32_t j, std::int32_t k) {
       big_pts.push_back(i);
     }
   }
-  // The larger surface's width where it meets the other (its members within
-  // 1 m of that end, so that a rectangle turned by a fraction of a degree
-  // does not narrow it there).
-  const Rectangle& r = big.rect;
-  const bool long_u = r.half_u >= r.half_v;
-  const Eigen::Vector3d along = long_u ? r.axis_u : r.axisV();
-  const Eigen::Vector3d across = long_u ? r.axisV() : r.axis_u;
-  const double end =
-      (along.dot(other.rect.centre - r.centre) >= 0 ? 1.0 : -1.0) * std::max(r.half_u, r.half_v);
-  double lo = INFINITY, hi = -INFINITY;
-  for (const std::int32_t i : big_pts) {
-    const Eigen::Vector3d d = points_[static_cast<std::size_t>(i)] - r.centre;
-    if (std::abs(along.dot(d) - end) <= 1.0) {
-      lo = std::min(lo, across.dot(d));
-      hi = std::max(hi, across.dot(d));
-    }
-  }
-  if (!(hi > lo)) {
-    return false;
-  }
-  std::vector<std::int32_t> moving;
-  std::size_t on_plane = 0;
-  for (const std::int32_t i : other.members) {
-    const Eigen::Vector3d& p = points_[static_cast<std::size_t>(i)];
-    const double c = across.dot(p - r.centre);
-    if (c >= lo - model_.sigma() && c <= hi + model_.sigma()) {
-      moving.push_back(i);
-      on_plane += std::abs(r.planeDistance(p)) <= 2.5 * model_.sigma() ? 1 : 0;
-    }
-  }
-  // Coplanar: as many within 2.5 sigma of the plane as noise puts there.
-  if (on_plane * 10 < moving.size() * 9) {
-    return false;
-  }
+  std::vector<std::int32_t> moving =
+      cornerTransfer(points_, big.rect, big_pts, other.rect, other.members, model_.sigma());
   if (moving.size() * 20 < big.members.size() || moving.size() * 10 > other.members.size() * 9) {
     return false;
   }
-  std::sort(moving.begin(), moving.end());
   std::vector<std::int32_t> staying, others = other.members;
   std::sort(others.begin(), others.end());
   std::set_difference(others.begin(), others.end(), moving.begin(), moving.end(),

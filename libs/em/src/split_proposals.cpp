@@ -441,4 +441,56 @@ std::optional<CoverageCut> coverageCut(const std::vector<Eigen::Vector3d>& point
   return best;
 }
 
+std::vector<std::int32_t> cornerTransfer(const std::vector<Eigen::Vector3d>& points,
+                                         const Rectangle& big,
+                                         const std::vector<std::int32_t>& big_extent,
+                                         const Rectangle& other,
+                                         const std::vector<std::int32_t>& other_members,
+                                         double sigma) {
+  constexpr double kMinLegBeyondM = 0.5;
+  const bool long_u = big.half_u >= big.half_v;
+  const Eigen::Vector3d along = long_u ? big.axis_u : big.axisV();
+  const Eigen::Vector3d across = long_u ? big.axisV() : big.axis_u;
+  const double end =
+      (along.dot(other.centre - big.centre) >= 0 ? 1.0 : -1.0) * std::max(big.half_u, big.half_v);
+  double lo = INFINITY, hi = -INFINITY;
+  for (const std::int32_t i : big_extent) {
+    const Eigen::Vector3d d = points[static_cast<std::size_t>(i)] - big.centre;
+    if (std::abs(along.dot(d) - end) <= 1.0) {
+      lo = std::min(lo, across.dot(d));
+      hi = std::max(hi, across.dot(d));
+    }
+  }
+  std::vector<std::int32_t> moving;
+  // An L's other leg runs across big's axis beyond its width (collinear
+  // pieces of one corridor are no L).
+  double other_lo = INFINITY, other_hi = -INFINITY;
+  for (const Eigen::Vector3d& c : other.corners()) {
+    other_lo = std::min(other_lo, across.dot(c - big.centre));
+    other_hi = std::max(other_hi, across.dot(c - big.centre));
+  }
+  if (!(hi > lo) || other_hi - other_lo < (hi - lo) + kMinLegBeyondM) {
+    return moving;
+  }
+  std::size_t on_plane = 0, beside = 0;
+  const double sign = end >= 0 ? 1.0 : -1.0;
+  for (const std::int32_t i : other_members) {
+    const Eigen::Vector3d& p = points[static_cast<std::size_t>(i)];
+    const Eigen::Vector3d d = p - big.centre;
+    const double c = across.dot(d);
+    if (c >= lo - sigma && c <= hi + sigma) {
+      moving.push_back(i);
+      on_plane += std::abs(big.planeDistance(p)) <= 2.5 * sigma ? 1 : 0;
+      // Beside big rather than beyond its end (a room's ceiling seen through
+      // a doorway next to the corridor's): no L.
+      beside += sign * along.dot(d) < std::abs(end) - 0.1 ? 1 : 0;
+    }
+  }
+  if (on_plane * 10 < moving.size() * 9 || beside * 10 > moving.size()) {
+    moving.clear();
+  }
+  std::sort(moving.begin(), moving.end());
+  return moving;
+}
+
 }  // namespace pmap::em
