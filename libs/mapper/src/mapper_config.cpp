@@ -110,6 +110,7 @@ void TextureSection::load(config::SectionReader& r) {
   r.read("max_total_mpx", t.max_total_mpx);
   r.read("memory_budget_mb", t.memory_budget_mb);
   r.read("blend", t.blend);
+  r.read("interpolation", t.interpolation);
   r.read("max_view_angle_deg", t.max_view_angle_deg);
   r.read("max_distance_m", t.max_distance_m);
   r.read("angle_power", t.angle_power);

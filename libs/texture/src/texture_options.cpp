@@ -27,6 +27,8 @@ bool TextureOptions::validate(std::string* why) const {
 
   if (blend != "weighted" && blend != "best")
     return fail("blend must be 'weighted' or 'best'");
+  if (interpolation != "bicubic" && interpolation != "bilinear")
+    return fail("interpolation must be 'bicubic' or 'bilinear'");
   if (!(max_view_angle_deg > 0.0 && max_view_angle_deg < 90.0)) {
     return fail("max_view_angle_deg must be in (0, 90)");
   }

@@ -1,5 +1,7 @@
 #include "pmap/texture/view_sampler.h"
 
+#include <array>
+
 namespace pmap::texture {
 
 cv::Vec3f sampleBilinear(const cv::Mat& bgr, double x, double y) {
@@ -14,6 +16,40 @@ cv::Vec3f sampleBilinear(const cv::Mat& bgr, double x, double y) {
   for (int k = 0; k < 3; ++k) {
     out[k] = (1 - fy) * ((1 - fx) * r0[x0][k] + fx * r0[x1][k]) +
              fy * ((1 - fx) * r1[x0][k] + fx * r1[x1][k]);
+  }
+  return out;
+}
+
+namespace {
+
+// Keys' cubic convolution kernel (a = -0.5): weights of the 4 taps at
+// offsets -1, 0, 1, 2 from floor(x), for the fraction t in [0, 1).
+std::array<float, 4> keysWeights(float t) {
+  constexpr float a = -0.5f;
+  auto near = [](float d) { return ((a + 2) * d - (a + 3)) * d * d + 1; };       // |d| <= 1
+  auto far = [](float d) { return ((a * d - 5 * a) * d + 8 * a) * d - 4 * a; };  // 1 < |d| < 2
+  return {far(1 + t), near(t), near(1 - t), far(2 - t)};
+}
+
+}  // namespace
+
+cv::Vec3f sampleBicubic(const cv::Mat& bgr, double x, double y) {
+  const int x0 = static_cast<int>(std::floor(x));
+  const int y0 = static_cast<int>(std::floor(y));
+  const std::array<float, 4> wx = keysWeights(static_cast<float>(x - x0));
+  const std::array<float, 4> wy = keysWeights(static_cast<float>(y - y0));
+  cv::Vec3f out(0, 0, 0);
+  for (int j = 0; j < 4; ++j) {
+    const cv::Vec3b* row = bgr.ptr<cv::Vec3b>(std::clamp(y0 - 1 + j, 0, bgr.rows - 1));
+    cv::Vec3f acc(0, 0, 0);
+    for (int i = 0; i < 4; ++i) {
+      const cv::Vec3b& p = row[std::clamp(x0 - 1 + i, 0, bgr.cols - 1)];
+      acc += cv::Vec3f(p[0], p[1], p[2]) * wx[static_cast<std::size_t>(i)];
+    }
+    out += acc * wy[static_cast<std::size_t>(j)];
+  }
+  for (int k = 0; k < 3; ++k) {
+    out[k] = std::clamp(out[k], 0.f, 255.f);
   }
   return out;
 }
@@ -60,7 +96,9 @@ double sampleView(const Eigen::Vector3d& c, const Eigen::Vector3d& n_cam, std::i
   if (view.depth != nullptr && view.depth->hidden(c, owner, options.occlusion_margin_m)) {
     return 0.0;
   }
-  colour = sampleBilinear(*view.image, px->x(), px->y()) * view.gain;
+  colour = (view.bicubic ? sampleBicubic(*view.image, px->x(), px->y())
+                         : sampleBilinear(*view.image, px->x(), px->y())) *
+           view.gain;
   return w;
 }
 

@@ -21,6 +21,10 @@ struct TextureOptions {
   /// "best" keeps, per texel, the single best-weighted view (the paper pasted
   /// single stripes; kept for comparison).
   std::string blend = "weighted";
+  /// How a view is sampled at a texel's projection: "bicubic" (Keys' cubic
+  /// convolution, a = -0.5: keeps more of the fine detail that bilinear
+  /// interpolation smooths away) or "bilinear".
+  std::string interpolation = "bicubic";
   double max_view_angle_deg = 75.0;  ///< views more oblique than this are not used
   double max_distance_m = 6.0;       ///< views farther than this are not used
   double angle_power = 2.0;          ///< weight *= cos(angle)^power

@@ -31,7 +31,8 @@ struct FrameView {
         gain(g),
         frame_weight(w),
         feather_px(options.feather_px * f.scale),
-        cos_max_angle(std::cos(options.max_view_angle_deg * 0.017453292519943295)) {}
+        cos_max_angle(std::cos(options.max_view_angle_deg * 0.017453292519943295)),
+        bicubic(options.interpolation == "bicubic") {}
 
   const CameraFrame* frame;
   const cv::Mat* image;  ///< BGR 8-bit, frame->width x frame->height
@@ -40,10 +41,15 @@ struct FrameView {
   double frame_weight;   ///< blur factor of the frame
   double feather_px;     ///< in this image's pixels
   double cos_max_angle;  ///< views more oblique are not used
+  bool bicubic;          ///< sampled bicubic (else bilinear)
 };
 
 /// Bilinear BGR sample at (x, y) in pixel coordinates, inside the image.
 cv::Vec3f sampleBilinear(const cv::Mat& bgr, double x, double y);
+
+/// Bicubic BGR sample at (x, y) (Keys' cubic convolution, a = -0.5, the
+/// image's border pixels repeated), clamped to [0, 255].
+cv::Vec3f sampleBicubic(const cv::Mat& bgr, double x, double y);
 
 /// The view weight of a sample (formula above); 0 when not usable.
 double viewWeight(double cos_angle, double distance_m, double border_px, const FrameView& view,
