@@ -1,12 +1,14 @@
 // Micro-benchmarks of the EM's hot paths on a synthetic corridor
 // (synthetic_corridor.h): the E-step per point-surface pair, the M-step per
-// surface and the rectangle fit (eq. 29). Run by scripts/bench.sh.
+// surface, the rectangle fit (eq. 29) and a model-selection round's coverage
+// cut. Run by scripts/bench.sh.
 #include <benchmark/benchmark.h>
 
 #include "pmap/em/measurement_model.h"
 #include "pmap/em/planar_em_options.h"
 #include "pmap/em/rectangle_index.h"
 #include "pmap/em/responsibilities.h"
+#include "pmap/em/split_proposals.h"
 #include "pmap/em/surface_fit.h"
 #include "synthetic_corridor.h"
 
@@ -95,6 +97,30 @@ void BM_RectangleFit(benchmark::State& state) {
   state.counters["members"] = static_cast<double>(members.size());
 }
 BENCHMARK(BM_RectangleFit)->Arg(20)->Arg(200)->Unit(benchmark::kMicrosecond);
+
+// A model-selection round's coverage cut of one surface (split_proposals.h:
+// the grid's empty areas and the parts' refitted rectangles for every cut
+// position along both axes), on the corridor's ceiling: items = members.
+void BM_CoverageCut(benchmark::State& state) {
+  const Corridor c = makeCorridor(static_cast<int>(state.range(0)));
+  std::vector<std::int32_t> members;
+  for (std::size_t i = 0; i < c.points.size(); ++i) {
+    if (c.points[i].z() > 2.6 && std::abs(c.points[i].y()) < 1.05)
+      members.push_back(static_cast<std::int32_t>(i));
+  }
+  em::Rectangle rect = c.surfaces[2].rect;
+  em::fitRectangle(c.points, members, rect);
+  const std::vector<double> loss(members.size(), 0.0);
+  const em::PlanarEmOptions o;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(em::coverageCut(c.points, members, loss, rect, o.split_cell_m,
+                                             o.empty_area_cost, o.kappa,
+                                             static_cast<std::size_t>(o.min_support), true));
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(members.size()));
+  state.counters["members"] = static_cast<double>(members.size());
+}
+BENCHMARK(BM_CoverageCut)->Arg(20)->Arg(200)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace pmap::bench

@@ -50,6 +50,7 @@ def main():
             "BM_MStep": "a surface (M-step: moments, plane, rectangle)",
             "BM_PlaneFromMoments": "a plane from moments (eqs. 24-27)",
             "BM_RectangleFit": "a member point of the rectangle fit (eq. 29)",
+            "BM_CoverageCut": "a member point of a coverage cut (model selection)",
             "BM_OnlineUpdatePerScan": "a scan of 181 points (online update)"}
     for name, r in b.items():
         base = name.split("/")[0]
@@ -78,7 +79,9 @@ def main():
         budget_factor="%.0f" % (200 / shares["true"]["em_p99"]), write_share="%.0f" % (100 * t["write"] / t["total"]),
         date=date, commit=commit, nproc=nproc, cpu=cpu, reps=reps, bench="\n".join(lines),
         stages=stages, pose_share="%.0f" % (100 * t["pose"] / t["total"]),
-        em_share_true="%.0f" % (100 * shares["true"]["em"] / shares["true"]["total"])))
+        em_share_true="%.0f" % (100 * shares["true"]["em"] / shares["true"]["total"]),
+        cut_ns="%.0f" % ns_per_item(b["BM_CoverageCut/200"]),
+        cut_over_fit="%.0f" % (ns_per_item(b["BM_CoverageCut/200"]) / ns_per_item(fit))))
 
 
 if __name__ == "__main__":

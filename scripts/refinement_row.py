@@ -24,11 +24,17 @@ def pair(key, scale=100.0, fmt="%.1f"):
 before = {p["gt_id"]: p["normal_error_deg"] for p in a["per_surface"]}
 growth = max((p["normal_error_deg"] - before[p["gt_id"]] for p in b["per_surface"]
               if p["gt_id"] in before), default=0.0)
+def doors(e):
+    d = [p["corner_error_closed_m"] for p in e["per_surface"] if p["kind"] == "door"]
+    return 100 * sum(d) / len(d) if d else float("nan")
+
+
 cells = [
     f"{a['surfaces']} → {b['surfaces']} / {b['gt_surfaces']}",
     pair("seam_gap_m"),
     f"{100 * a['corner_error_m']['mean']:.1f} → {100 * b['corner_error_m']['mean']:.1f}",
     f"{100 * a['corner_error_closed_m']['mean']:.1f} → {100 * b['corner_error_closed_m']['mean']:.1f}",
+    f"{doors(a):.1f} → {doors(b):.1f} ({len(ref.get('openings', []))})",
     f"{a['normal_error_deg']['mean']:.3f} → {b['normal_error_deg']['mean']:.3f}",
     f"{growth:+.3f}",
     f"{len(ref['seams'])}, {ref['fused_pairs']} ({ref['termination']})",
