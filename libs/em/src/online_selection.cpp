@@ -39,19 +39,15 @@ int OnlineEm::seedNew() {
   std::unordered_map<std::int32_t, std::int32_t> local_of;
   std::vector<Eigen::Vector3d> pts;
   std::vector<double> outlier;
-  std::vector<double> growable;
   for (const std::int32_t g : global) {
     local_of[g] = static_cast<std::int32_t>(pts.size());
     pts.push_back(points_[static_cast<std::size_t>(g)]);
-    // A point that stayed unexplained through kSeedTries seeding turns does
-    // not seed again (clutter, or a patch too small): bounded work per scan.
-    // It may still join a surface seeded next to it (a door's first scan,
-    // seen before enough of the door was there to be a surface).
-    const bool unexplained =
-        best_[static_cast<std::size_t>(g)] < 0 && !not_planar_[static_cast<std::size_t>(g)];
-    growable.push_back(unexplained ? 1.0 : 0.0);
-    outlier.push_back(unexplained && seed_tries_[static_cast<std::size_t>(g)] < kSeedTries ? 1.0
-                                                                                           : 0.0);
+    // A point that stayed unexplained through kSeedTries seeding turns is not
+    // seeded again (clutter, or a patch too small): bounded work per scan.
+    const bool free = best_[static_cast<std::size_t>(g)] < 0 &&
+                      !not_planar_[static_cast<std::size_t>(g)] &&
+                      seed_tries_[static_cast<std::size_t>(g)] < kSeedTries;
+    outlier.push_back(free ? 1.0 : 0.0);
   }
   if (std::count(outlier.begin(), outlier.end(), 1.0) < options_.min_support) {
     return 0;
@@ -86,8 +82,7 @@ int OnlineEm::seedNew() {
   };
   PlanarEmOptions seeding = options_;
   seeding.max_new_per_round = 2;
-  const SeedResult s =
-      seedSurfaces(pts, nb, outlier, model_, seeding, accept, rng_, kSeedAttempts, growable);
+  const SeedResult s = seedSurfaces(pts, nb, outlier, model_, seeding, accept, rng_, kSeedAttempts);
   for (std::size_t k = 0; k < global.size(); ++k) {
     if (outlier[k] > 0.0) {
       ++seed_tries_[static_cast<std::size_t>(global[k])];

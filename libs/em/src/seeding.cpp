@@ -87,15 +87,12 @@ std::vector<std::int32_t> growRegion(const std::vector<Eigen::Vector3d>& points,
 SeedResult seedSurfaces(const std::vector<Eigen::Vector3d>& points, const Neighbours& neighbours,
                         const std::vector<double>& outlier, const MeasurementModel& model,
                         const PlanarEmOptions& options, const SurfaceCheck& accept,
-                        std::mt19937_64& rng, std::size_t max_attempts,
-                        const std::vector<double>& growable) {
-  std::vector<char> seedable(points.size(), 0);
+                        std::mt19937_64& rng, std::size_t max_attempts) {
   std::vector<char> free(points.size(), 0);
   for (std::size_t i = 0; i < points.size(); ++i) {
-    seedable[i] = outlier[i] > options.seed_outlier_probability ? 1 : 0;
-    free[i] = seedable[i] || (!growable.empty() && growable[i] > options.seed_outlier_probability);
+    free[i] = outlier[i] > options.seed_outlier_probability ? 1 : 0;
   }
-  std::vector<Triple> triples = seedTriples(points, neighbours, seedable);
+  std::vector<Triple> triples = seedTriples(points, neighbours, free);
   SeedResult result;
   result.candidates = triples.size();
   std::shuffle(triples.begin(), triples.end(), rng);

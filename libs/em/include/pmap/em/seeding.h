@@ -31,13 +31,10 @@ struct SeedResult {
 using SurfaceCheck = std::function<bool(const std::vector<std::int32_t>&, Rectangle&)>;
 
 /// Seeds new surfaces among points with outlier[i] > options.seed_outlier_probability;
-/// `accept` fits each grown region and decides. Regions grow over those
-/// points and, when `growable` is given, also over points with growable[i]
-/// above the threshold (points that may join a surface but not seed one).
+/// `accept` fits each grown region and decides.
 SeedResult seedSurfaces(const std::vector<Eigen::Vector3d>& points, const Neighbours& neighbours,
                         const std::vector<double>& outlier, const MeasurementModel& model,
                         const PlanarEmOptions& options, const SurfaceCheck& accept,
-                        std::mt19937_64& rng, std::size_t max_attempts = 0,
-                        const std::vector<double>& growable = {});
+                        std::mt19937_64& rng, std::size_t max_attempts = 0);
 
 }  // namespace pmap::em
