@@ -4,6 +4,7 @@
 // cut. Run by scripts/bench.sh.
 #include <benchmark/benchmark.h>
 
+#include "pmap/em/coverage_cut.h"
 #include "pmap/em/measurement_model.h"
 #include "pmap/em/planar_em_options.h"
 #include "pmap/em/rectangle_index.h"
@@ -98,7 +99,7 @@ void BM_RectangleFit(benchmark::State& state) {
 }
 BENCHMARK(BM_RectangleFit)->Arg(20)->Arg(200)->Unit(benchmark::kMicrosecond);
 
-// A model-selection round's coverage cut of one surface (split_proposals.h:
+// A model-selection round's coverage cut of one surface (coverage_cut.h:
 // the grid's empty areas and the parts' refitted rectangles for every cut
 // position along both axes), on the corridor's ceiling: items = members.
 void BM_CoverageCut(benchmark::State& state) {

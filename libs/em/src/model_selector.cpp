@@ -4,6 +4,7 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "pmap/em/coverage_cut.h"
 #include "pmap/em/model_selection.h"
 #include "pmap/em/planarity.h"
 #include "pmap/em/rectangle_index.h"

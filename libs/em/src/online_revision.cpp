@@ -6,6 +6,7 @@
 #include <iterator>
 #include <set>
 
+#include "pmap/em/coverage_cut.h"
 #include "pmap/em/model_selection.h"
 #include "pmap/em/online_em.h"
 #include "pmap/em/planarity.h"
@@ -193,23 +194,20 @@ bool OnlineEm::leavesUnexplained(std::int32_t j, const Rectangle& kept) const {
   return false;
 }
 
-bool OnlineEm::trySplit(std::int32_t j) {
-  OnlineSurface& s = surfaces_[static_cast<std::size_t>(j)];
-  if (s.members.size() < 2 * static_cast<std::size_t>(options_.min_support)) {
-    return false;
-  }
-  const std::vector<std::int32_t> sample =
-      merged(sampleMembers(s, online_.selection_sample_cap), s.hull);
-  const double scale = static_cast<double>(s.members.size()) / static_cast<double>(sample.size());
-  const auto min_part =
-      static_cast<std::size_t>(std::max(8.0, static_cast<double>(options_.min_support) / scale));
+// A capped subsample of surface j for its split tests, with how much worse
+// each sampled point is explained without the surface.
+OnlineEm::SplitSample OnlineEm::splitSample(std::int32_t j) {
+  const OnlineSurface& s = surfaces_[static_cast<std::size_t>(j)];
+  SplitSample x;
+  x.points = merged(sampleMembers(s, online_.selection_sample_cap), s.hull);
+  x.scale = static_cast<double>(s.members.size()) / static_cast<double>(x.points.size());
+  x.min_part =
+      static_cast<std::size_t>(std::max(8.0, static_cast<double>(options_.min_support) / x.scale));
   // Cells coarse enough that a subsample still covers a fully seen surface.
-  const double cell = std::max(options_.split_cell_m,
-                               1.5 * std::sqrt(s.rect.area() / static_cast<double>(sample.size())));
-  // How much worse each sampled point is explained without this surface.
-  std::vector<double> loss;
+  x.cell = std::max(options_.split_cell_m,
+                    1.5 * std::sqrt(s.rect.area() / static_cast<double>(x.points.size())));
   std::vector<std::int32_t> cand;
-  for (const std::int32_t i : sample) {
+  for (const std::int32_t i : x.points) {
     const Eigen::Vector3d& p = points_[static_cast<std::size_t>(i)];
     index_.candidates(p, cand);
     double other = model_.outlierScore();
@@ -220,15 +218,25 @@ bool OnlineEm::trySplit(std::int32_t j) {
             model_.surfaceScore(surfaces_[static_cast<std::size_t>(k)].rect.squaredDistance(p)));
       }
     }
-    loss.push_back(std::max(0.0, model_.surfaceScore(s.rect.squaredDistance(p)) - other) * scale);
+    x.loss.push_back(std::max(0.0, model_.surfaceScore(s.rect.squaredDistance(p)) - other) *
+                     x.scale);
   }
+  return x;
+}
+
+// The candidate replacements of surface j: residual splits (two parts) and
+// the best coverage cut (two parts, or one kept: a trim).
+std::vector<std::vector<std::vector<std::int32_t>>> OnlineEm::splitOptions(
+    std::int32_t j, const SplitSample& x) const {
+  const OnlineSurface& s = surfaces_[static_cast<std::size_t>(j)];
   std::vector<std::vector<std::vector<std::int32_t>>> options;
-  for (const SplitProposal& p : residualSplits(
-           points_, sample, s.rect, cell, options_.split_min_offset_m, model_.sigma(), min_part)) {
+  for (const SplitProposal& p :
+       residualSplits(points_, x.points, s.rect, x.cell, options_.split_min_offset_m,
+                      model_.sigma(), x.min_part)) {
     options.push_back({p.part_a, p.part_b});
   }
-  auto c = coverageCut(points_, sample, loss, s.rect, cell, options_.empty_area_cost,
-                       options_.kappa, min_part, true);
+  auto c = coverageCut(points_, x.points, x.loss, s.rect, x.cell, options_.empty_area_cost,
+                       options_.kappa, x.min_part, true);
   // A surface is trimmed of points it leaves unexplained at most once: the
   // outlier band would let it win them back, regrow and re-trim it forever.
   // Handing points over to the surfaces that explain them can be repeated.
@@ -236,8 +244,8 @@ bool OnlineEm::trySplit(std::int32_t j) {
     Rectangle kept = s.rect;
     const auto& part = c->keep == CutKeep::kPartA ? c->parts.part_a : c->parts.part_b;
     if (fitSurface(points_, part, kept) != FitStatus::kOk || leavesUnexplained(j, kept)) {
-      c = coverageCut(points_, sample, loss, s.rect, cell, options_.empty_area_cost, options_.kappa,
-                      min_part, false);
+      c = coverageCut(points_, x.points, x.loss, s.rect, x.cell, options_.empty_area_cost,
+                      options_.kappa, x.min_part, false);
     }
   }
   if (c) {
@@ -247,10 +255,43 @@ bool OnlineEm::trySplit(std::int32_t j) {
       options.push_back({c->keep == CutKeep::kPartA ? c->parts.part_a : c->parts.part_b});
     }
   }
+  return options;
+}
+
+// The log-posterior change (eq. 30, hard scores on the subsample scaled to
+// all members, kappa, the empty-area prior) of replacing surface j by `rects`
+// fitted to `parts`.
+double OnlineEm::splitGain(std::int32_t j, const SplitSample& x,
+                           const std::vector<std::vector<std::int32_t>>& parts,
+                           const std::vector<Rectangle>& rects) const {
+  const Rectangle& old = surfaces_[static_cast<std::size_t>(j)].rect;
+  double gain = -options_.kappa * static_cast<double>(rects.size() - 1) +
+                options_.empty_area_cost * emptyArea(points_, x.points, old, x.cell);
+  for (std::size_t k = 0; k < rects.size(); ++k) {
+    gain -= options_.empty_area_cost * emptyArea(points_, parts[k], rects[k], x.cell);
+  }
+  for (std::size_t n = 0; n < x.points.size(); ++n) {
+    const Eigen::Vector3d& p = points_[static_cast<std::size_t>(x.points[n])];
+    const double was = model_.surfaceScore(old.squaredDistance(p));
+    double now = was - x.loss[n] / x.scale;
+    for (const Rectangle& r : rects) {
+      now = std::max(now, model_.surfaceScore(r.squaredDistance(p)));
+    }
+    gain += (now - was) * x.scale;
+  }
+  return gain;
+}
+
+bool OnlineEm::trySplit(std::int32_t j) {
+  OnlineSurface& s = surfaces_[static_cast<std::size_t>(j)];
+  if (s.members.size() < 2 * static_cast<std::size_t>(options_.min_support)) {
+    return false;
+  }
+  const SplitSample x = splitSample(j);
   // The option that raises the posterior most (by more than min_gain).
   double best_gain = options_.min_gain;
   std::vector<Rectangle> best;
-  for (const auto& parts : options) {
+  for (const auto& parts : splitOptions(j, x)) {
     std::vector<Rectangle> rects;
     for (const auto& part : parts) {
       Rectangle r = s.rect;
@@ -260,22 +301,7 @@ bool OnlineEm::trySplit(std::int32_t j) {
       }
       rects.push_back(r);
     }
-    if (rects.size() != parts.size()) {
-      continue;
-    }
-    double gain = -options_.kappa * static_cast<double>(rects.size() - 1) +
-                  options_.empty_area_cost * emptyArea(points_, sample, s.rect, cell);
-    for (std::size_t k = 0; k < rects.size(); ++k) {
-      gain -= options_.empty_area_cost * emptyArea(points_, parts[k], rects[k], cell);
-    }
-    for (std::size_t n = 0; n < sample.size(); ++n) {
-      const Eigen::Vector3d& p = points_[static_cast<std::size_t>(sample[n])];
-      double now = model_.surfaceScore(s.rect.squaredDistance(p)) - loss[n] / scale;
-      for (const Rectangle& r : rects) {
-        now = std::max(now, model_.surfaceScore(r.squaredDistance(p)));
-      }
-      gain += (now - model_.surfaceScore(s.rect.squaredDistance(p))) * scale;
-    }
+    const double gain = rects.size() == parts.size() ? splitGain(j, x, parts, rects) : -INFINITY;
     if (gain > best_gain) {
       best_gain = gain;
       best = std::move(rects);

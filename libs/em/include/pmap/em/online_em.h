@@ -98,6 +98,19 @@ class OnlineEm {
   int removeUnsupported();
   void selectRoundRobin(SelectionChanges& c);
   bool tryFuse(std::int32_t j);
+  struct SplitSample {
+    std::vector<std::int32_t> points;  ///< a capped subsample and the hull
+    std::vector<double> loss;          ///< per point: worse without the surface (nats, scaled)
+    double scale = 1;                  ///< members per sampled point
+    double cell = 0;                   ///< grid cell of the split tests (m)
+    std::size_t min_part = 0;          ///< smallest part, in sampled points
+  };
+  SplitSample splitSample(std::int32_t j);
+  std::vector<std::vector<std::vector<std::int32_t>>> splitOptions(std::int32_t j,
+                                                                   const SplitSample& x) const;
+  double splitGain(std::int32_t j, const SplitSample& x,
+                   const std::vector<std::vector<std::int32_t>>& parts,
+                   const std::vector<Rectangle>& rects) const;
   bool trySplit(std::int32_t j);
   bool tryRecut(std::int32_t j, std::int32_t k);
   bool leavesUnexplained(std::int32_t j, const Rectangle& kept) const;
