@@ -15,6 +15,19 @@ using detail::CellGrid;
 using detail::gridOf;
 using detail::partition;
 
+// `ids` in rect's in-plane frame (axis_u, axisV) about its centre.
+std::vector<Eigen::Vector2d> inPlane(const std::vector<Eigen::Vector3d>& points,
+                                     const std::vector<std::int32_t>& ids, const Rectangle& rect) {
+  const Eigen::Vector3d v = rect.axisV();
+  std::vector<Eigen::Vector2d> uv;
+  uv.reserve(ids.size());
+  for (const std::int32_t i : ids) {
+    const Eigen::Vector3d d = points[static_cast<std::size_t>(i)] - rect.centre;
+    uv.emplace_back(rect.axis_u.dot(d), v.dot(d));
+  }
+  return uv;
+}
+
 // Occupied-cell bounding boxes of the cells before / after each cut along one
 // axis of the grid ("lines" are columns for cuts along u, rows for cuts along
 // v). Returns for every cut position k (1..lines-1) the empty area in cells of
@@ -124,17 +137,7 @@ std::optional<Rectangle> frameAlong(const std::vector<Eigen::Vector3d>& points,
                                     const std::vector<std::int32_t>& part,
                                     const std::vector<std::int32_t>& members,
                                     const Rectangle& rect) {
-  const Eigen::Vector3d v = rect.axisV();
-  auto project = [&](const std::vector<std::int32_t>& ids) {
-    std::vector<Eigen::Vector2d> uv;
-    uv.reserve(ids.size());
-    for (const std::int32_t i : ids) {
-      const Eigen::Vector3d d = points[static_cast<std::size_t>(i)] - rect.centre;
-      uv.emplace_back(rect.axis_u.dot(d), v.dot(d));
-    }
-    return uv;
-  };
-  const Rect2D r = minAreaRectangle(project(part));
+  const Rect2D r = minAreaRectangle(inPlane(points, part, rect));
   const Eigen::Vector2d a = r.axis;
   if (r.area() <= 0.0 ||
       std::min(std::abs(a.x()), std::abs(a.y())) < std::sin(0.2 * M_PI / 180.0)) {
@@ -142,13 +145,13 @@ std::optional<Rectangle> frameAlong(const std::vector<Eigen::Vector3d>& points,
   }
   const Eigen::Vector2d b(-a.y(), a.x());
   Eigen::Vector2d lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
-  for (const Eigen::Vector2d& q : project(members)) {
+  for (const Eigen::Vector2d& q : inPlane(points, members, rect)) {
     const Eigen::Vector2d f(a.dot(q), b.dot(q));
     lo = lo.cwiseMin(f);
     hi = hi.cwiseMax(f);
   }
   Rectangle frame = rect;
-  frame.axis_u = (a.x() * rect.axis_u + a.y() * v).normalized();
+  frame.axis_u = (a.x() * rect.axis_u + a.y() * rect.axisV()).normalized();
   const Eigen::Vector3d fv = rect.normal.cross(frame.axis_u);
   const Eigen::Vector2d mid = 0.5 * (lo + hi);
   frame.centre = rect.centre + frame.axis_u * mid.x() + fv * mid.y();
@@ -237,13 +240,7 @@ std::optional<CoverageCut> coverageCutInFrame(const std::vector<Eigen::Vector3d>
   for (const int c : g.cell_of) {
     occupied[static_cast<std::size_t>(c)] = 1;
   }
-  const Eigen::Vector3d axis_v = rect.axisV();
-  std::vector<Eigen::Vector2d> uv;
-  uv.reserve(members.size());
-  for (const std::int32_t i : members) {
-    const Eigen::Vector3d d = points[static_cast<std::size_t>(i)] - rect.centre;
-    uv.emplace_back(rect.axis_u.dot(d), axis_v.dot(d));
-  }
+  const std::vector<Eigen::Vector2d> uv = inPlane(points, members, rect);
   const double cell_area = cell_m * cell_m;
   std::vector<CutCandidate> cands;
   for (const bool along_u : {true, false}) {

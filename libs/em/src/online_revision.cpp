@@ -74,18 +74,14 @@ bool OnlineEm::tryFuse(std::int32_t j) {
                              : sum * static_cast<double>(part->members.size()) /
                                    static_cast<double>(sample.size());
     }
-    if (gain <= options_.min_gain) {
-      if (tryRecut(j, k)) {
-        return true;
-      }
-      continue;
+    if (gain > options_.min_gain) {  // then with the empty-area prior
+      const double cell = options_.split_cell_m;
+      gain +=
+          options_.empty_area_cost * (emptyArea(points_, a.members, a.rect, cell) +
+                                      emptyArea(points_, b.members, b.rect, cell) -
+                                      emptyArea(points_, merged(a.members, b.members), m, cell));
     }
-    const std::vector<std::int32_t> all = merged(a.members, b.members);
-    const double cell = options_.split_cell_m;
-    gain += options_.empty_area_cost *
-            (emptyArea(points_, a.members, a.rect, cell) +
-             emptyArea(points_, b.members, b.rect, cell) - emptyArea(points_, all, m, cell));
-    if (gain <= options_.min_gain) {
+    if (gain <= options_.min_gain) {  // kept apart: an L is re-cut instead
       if (tryRecut(j, k)) {
         return true;
       }
@@ -109,10 +105,10 @@ bool OnlineEm::tryFuse(std::int32_t j) {
 // Two coplanar neighbours that fusion keeps apart (an L: a ceiling around a
 // corner) are brought into the canonical form the offline fusion step gives
 // them: the larger surface runs through the corner. It takes the other's
-// members that lie within its own width (across its long axis), when they
-// lie on its plane (90 % within 2.5 sigma) and are clearly many (5 % of its own members:
-// the corner square, not a fringe), some stay with the other surface, and
-// the two rectangles refitted around their points leave no more empty area.
+// members within its own width at that end (cornerTransfer), when they are
+// clearly many (5 % of its own members: the corner square, not a fringe),
+// some stay with the other surface, and the two rectangles refitted around
+// their points leave no more empty area.
 bool OnlineEm::tryRecut(std::int32_t j, std::int32_t k) {
   OnlineSurface& a = surfaces_[static_cast<std::size_t>(j)];
   OnlineSurface& b = surfaces_[static_cast<std::size_t>(k)];
