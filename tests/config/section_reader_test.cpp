@@ -28,6 +28,16 @@ std::string errorOf(const std::function<void()>& f) {
   return {};
 }
 
+// The error of reading `key` alone: a value that does not parse is reported
+// by finish(), first, before the keys this reader did not ask for.
+template <class T>
+std::string readError(const IniDocument& d, const std::string& key, T value) {
+  SectionReader r(d, "S");
+  r.read(key, value);
+  const std::string all = errorOf([&] { r.finish(); });
+  return all.substr(0, all.find('\n'));
+}
+
 const EffectiveConfig::Entry* entry(const EffectiveConfig& eff, const std::string& section,
                                     const std::string& key) {
   for (const auto& s : eff.sections()) {
@@ -137,25 +147,22 @@ TEST(SectionReader, DefaultDoublesRoundTripThroughTheEffectiveIni) {
 TEST(SectionReader, UnparsableNumbersNameFileLineSectionAndKey) {
   const auto d =
       doc("[S]\nx = abc\nn = 4.5\nm = 99999999999\nbig = 1e3\nh = 99999999999999999999\n");
-  SectionReader r(d, "S");
   double x = 0;
   int n = 0;
   std::int64_t big = 0;
-  EXPECT_EQ(errorOf([&] { r.read("x", x); }), "cfg.ini:2: [S] x = 'abc': not a number");
-  EXPECT_EQ(errorOf([&] { r.read("n", n); }), "cfg.ini:3: [S] n = '4.5': not an integer");
-  EXPECT_EQ(errorOf([&] { r.read("m", n); }),
-            "cfg.ini:4: [S] m = '99999999999': out of range for int");
-  EXPECT_EQ(errorOf([&] { r.read("big", big); }), "cfg.ini:5: [S] big = '1e3': not an integer");
-  EXPECT_EQ(errorOf([&] { r.read("h", big); }),
+  EXPECT_EQ(readError(d, "x", x), "cfg.ini:2: [S] x = 'abc': not a number");
+  EXPECT_EQ(readError(d, "n", n), "cfg.ini:3: [S] n = '4.5': not an integer");
+  EXPECT_EQ(readError(d, "m", n), "cfg.ini:4: [S] m = '99999999999': out of range for int");
+  EXPECT_EQ(readError(d, "big", big), "cfg.ini:5: [S] big = '1e3': not an integer");
+  EXPECT_EQ(readError(d, "h", big),
             "cfg.ini:6: [S] h = '99999999999999999999': out of range for a 64-bit integer");
 }
 
 TEST(SectionReader, NanInfAndUnitsAreNotNumbers) {
   const auto d = doc("[S]\na = nan\nb = inf\nc = 1.5m\nd =\n");
-  SectionReader r(d, "S");
   double v = 0;
   for (const std::string key : {"a", "b", "c", "d"}) {
-    EXPECT_NE(errorOf([&] { r.read(key, v); }).find(": not a number"), std::string::npos) << key;
+    EXPECT_NE(readError(d, key, v).find(": not a number"), std::string::npos) << key;
   }
 }
 
@@ -171,9 +178,25 @@ TEST(SectionReader, BoolAcceptsTheUsualSpellingsOnly) {
   EXPECT_FALSE(b);
   EXPECT_TRUE(c);
   EXPECT_FALSE(dd);
-  EXPECT_EQ(errorOf([&] { r.read("e", e); }),
+  EXPECT_EQ(readError(d, "e", e),
             "cfg.ini:6: [S] e = 'maybe': not a boolean (expected true/false, yes/no, on/off or "
             "1/0)");
+}
+
+TEST(SectionReader, Item7_FinishReportsEveryProblemOfTheSectionAtOnce) {
+  const auto d = doc("[S]\nx = abc\nsigam_m = 2\nb = maybe\n");
+  SectionReader r(d, "S");
+  double x = 1.5, sigma = 0;
+  bool b = true;
+  r.read("x", x);
+  r.read("sigma_m", sigma);
+  r.read("b", b);
+  EXPECT_EQ(x, 1.5);  // the default stays until finish() reports
+  EXPECT_EQ(errorOf([&] { r.finish(); }),
+            "cfg.ini:2: [S] x = 'abc': not a number\n"
+            "cfg.ini:4: [S] b = 'maybe': not a boolean (expected true/false, yes/no, on/off or "
+            "1/0)\n"
+            "cfg.ini:3: [S] unknown key 'sigam_m' (did you mean 'sigma_m'?)");
 }
 
 TEST(SectionReader, FinishReportsUnknownKeysWithTheNearestKnownOne) {

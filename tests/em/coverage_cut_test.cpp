@@ -213,5 +213,28 @@ TEST(CoverageCut, AFullRectangleOrTooFewMembersGiveNoCut) {
   EXPECT_FALSE(coverageCut(c.points, {0, 1, 2}, {0, 0, 0}, box(0, 3, 0, 2), 0.15, 20, 0, 60, true));
 }
 
+// An L whose rectangle three stray members on its plane stretch over 1e7 to
+// 1e12 m (a mis-placed scan): the cut trims the strays off, and the grid
+// behind it holds the occupied cells only (before: cols x rows cells, up to
+// 1e13 of them, or an int overflow).
+TEST(CoverageCut, Item12_StraysFarAwayAreTrimmedInTheMembersMemory) {
+  for (const double far_m : {1e7, 1e9, 1e12}) {
+    SCOPED_TRACE(far_m);
+    testing::Cloud c = lShape(0.1);
+    const std::size_t l_points = c.points.size();
+    c.points.push_back({far_m, 1.0, 0.0});
+    c.points.push_back({far_m, 1.5, 0.0});
+    c.points.push_back({far_m - 1.0, 1.0, 0.0});
+    const auto members = allIndices(c.points.size());
+    const std::vector<double> loss(members.size(), 5.0);
+    const auto cut =
+        coverageCut(c.points, members, loss, box(0, far_m, 0, 5), 0.15, 20.0, 200.0, 60, true);
+    ASSERT_TRUE(cut.has_value());
+    EXPECT_EQ(cut->keep, CutKeep::kPartA);
+    EXPECT_EQ(cut->parts.part_a.size(), l_points);
+    EXPECT_EQ(cut->parts.part_b.size(), 3u);
+  }
+}
+
 }  // namespace
 }  // namespace pmap::em

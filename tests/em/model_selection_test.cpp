@@ -202,5 +202,23 @@ TEST(UnionOf, IsSortedAndWithoutDuplicates) {
   EXPECT_EQ(unionOf({{5, 1, 3}, {3, 2}, {}, {9, 1}}), (std::vector<std::int32_t>{1, 2, 3, 5, 9}));
 }
 
+// A rectangle stretched over 1e7 to 1e12 m by stray members: the covered
+// cells are counted from the members (a sorted list, not a grid over the
+// rectangle), each distinct cell once, without overflow.
+TEST(EmptyArea, Item12_AStretchedRectangleCountsTheMembersCells) {
+  for (const double far_m : {500.0, 1e7, 1e9, 1e12}) {  // all beyond the dense grid's limit
+    SCOPED_TRACE(far_m);
+    std::vector<Eigen::Vector3d> pts = {
+        {0.01, 0.01, 0}, {0.02, 0.02, 0}, {0.5, 0.01, 0}, {far_m, far_m, 0}, {far_m, far_m, 0}};
+    Rectangle r;
+    r.centre = {far_m / 2, far_m / 2, 0};
+    r.half_u = r.half_v = far_m / 2;
+    const double cell = 0.1;
+    // Distinct cells: (0, 0), (5, 0) and the far corner's.
+    const double covered = 3 * cell * cell;
+    EXPECT_DOUBLE_EQ(emptyArea(pts, allIndices(pts.size()), r, cell), r.area() - covered);
+  }
+}
+
 }  // namespace
 }  // namespace pmap::em

@@ -137,5 +137,33 @@ TEST(NearestNeighbours, FarFromTheOriginGivesTheSameGraph) {
   EXPECT_EQ(nearestNeighbours(pts, 0.25), nearestNeighbours(far, 0.25));
 }
 
+// Clusters 1e9 to 1e12 m apart: neighbours within each cluster, as if it
+// were alone, and a grid over the points only (no overflow, UBSan build).
+TEST(NearestNeighbours, Item12_ClustersAstronomicallyApartAreMappedAlone) {
+  std::mt19937_64 rng(20);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Eigen::Vector3d> near, all;
+  for (int k = 0; k < 100; ++k) {  // on a 1/4096 m lattice: shifts by 2^40 m stay exact
+    const Eigen::Vector3d q(u(rng), u(rng), u(rng));
+    near.push_back((q * 4096.0).array().round().matrix() / 4096.0);
+  }
+  for (const double far_m : {0.0, 0x1p30, -0x1p40}) {  // 0, 1.07e9 m, -1.1e12 m
+    for (const Eigen::Vector3d& p : near) {
+      all.push_back(p + Eigen::Vector3d(far_m, 0.0, 0.0));
+    }
+  }
+  const Neighbours one = nearestNeighbours(near, 0.25);
+  const Neighbours n = nearestNeighbours(all, 0.25);
+  for (std::size_t c = 0; c < 3; ++c) {
+    for (std::size_t i = 0; i < near.size(); ++i) {
+      for (std::size_t m = 0; m < 4; ++m) {
+        const std::int32_t expected =
+            one[i][m] < 0 ? -1 : one[i][m] + static_cast<std::int32_t>(c * near.size());
+        EXPECT_EQ(n[c * near.size() + i][m], expected);
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace pmap::em

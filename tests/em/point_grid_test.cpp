@@ -97,5 +97,27 @@ TEST(PointGrid, AHugeBoxReturnsEveryPointOnce) {
   EXPECT_EQ(g.within({0, 0, 0}, 1e4).size(), pts.size());
 }
 
+// Points spread over +-1e12 m: one cell per occupied cell (the grid never
+// spans the extent), exact answers, and no cell coordinate overflow (UBSan).
+TEST(PointGrid, Item12_PointGridMemoryFollowsPoints) {
+  std::mt19937_64 rng(4);
+  std::vector<Eigen::Vector3d> pts;
+  for (const Eigen::Vector3d& at :
+       {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1e12, 0, 0), Eigen::Vector3d(-1e12, 1e12, 3e9),
+        Eigen::Vector3d(2.6e10, -7e11, 0), Eigen::Vector3d(1e300, 0, 0)}) {
+    const auto cluster = randomCloud(rng, 100, at, 0.5);
+    pts.insert(pts.end(), cluster.begin(), cluster.end());
+  }
+  const PointGrid g(pts, 0.1);
+  EXPECT_LE(g.occupiedCells(), pts.size());
+  for (std::size_t i = 0; i < pts.size(); i += 7) {
+    EXPECT_EQ(g.within(pts[i], 0.3), bruteWithin(pts, pts[i], 0.3)) << i;
+  }
+  // A box over everything lists every point once.
+  const auto all = g.inBox(Eigen::Vector3d::Constant(-1e301), Eigen::Vector3d::Constant(1e301));
+  EXPECT_EQ(all.size(), pts.size());
+  EXPECT_EQ(std::adjacent_find(all.begin(), all.end()), all.end());
+}
+
 }  // namespace
 }  // namespace pmap::em

@@ -104,5 +104,34 @@ TEST(RectangleIndex, LargeAndUnboundedSurfacesAreEverywhere) {
   EXPECT_EQ(cand, unbounded);
 }
 
+// Rectangles spanning up to 1e12 m (a surface stretched by a mis-placed
+// scan) and many large ones: the index holds at most its cell budget, the
+// rest are listed for every point, and nothing within the inflation is
+// missed (before: a 1e12 m rectangle overflowed int cell coordinates).
+TEST(RectangleIndex, Item12_RectangleIndexMemoryIsBounded) {
+  std::mt19937_64 rng(34);
+  auto surfaces = randomSurfaces(rng, 30, {0, 0, 0});
+  for (const double far_m : {1e7, 1e9, 1e12}) {
+    Surface s;
+    s.rect.centre = {far_m / 2, 0, 0};
+    s.rect.half_u = far_m / 2;
+    s.rect.half_v = 2.0;
+    surfaces.push_back(s);
+  }
+  const RectangleIndex index(surfaces, 0.2, 1.0);
+  EXPECT_LE(index.indexedCells(), 2000000u);
+  expectNoMisses(surfaces, index, {0, 0, 0}, 0.2, rng);
+  std::vector<std::int32_t> cand;
+  index.candidates({1e12, 0, 0}, cand);
+  EXPECT_TRUE(std::binary_search(cand.begin(), cand.end(), 32));
+  // A total budget of 2000 cells: the smallest rectangles are indexed, the
+  // others are global, and candidates stay exact supersets.
+  const RectangleIndex small(surfaces, 0.2, 1.0, 200000, 2000);
+  EXPECT_LE(small.indexedCells(), 2000u);
+  EXPECT_GT(small.indexedCells(), 0u);
+  EXPECT_GE(small.globalCount(), 3u);
+  expectNoMisses(surfaces, small, {0, 0, 0}, 0.2, rng);
+}
+
 }  // namespace
 }  // namespace pmap::em

@@ -98,5 +98,28 @@ TEST(ResidualSplit, AFlatWallOrAShallowPatchIsNotSplit) {
   EXPECT_FALSE(residualSplit(door.cloud.points, {}, door.rect, 0.15, 0.04, 0.02, 3));
 }
 
+// A stray member on the wall's plane 1e9 or 1e12 m away (a mis-placed scan)
+// stretches the rectangle: the grid stays one cell per occupied cell, so the
+// test runs in the members' memory and finds no patch in the coarse cells.
+TEST(ResidualSplit, Item12_AStretchedRectangleCostsTheMembersNotTheExtent) {
+  for (const double far_m : {1e9, 1e12}) {
+    RecessedDoor w(0.10, 0.02);
+    const Eigen::Vector3d u = w.rect.axis_u;
+    const Eigen::Vector3d corner = w.rect.centre - u * w.rect.half_u;
+    w.cloud.points.push_back(corner + u * far_m);
+    w.cloud.points.push_back(corner + u * far_m + w.rect.axisV() * 0.5);
+    Rectangle stretched = w.rect;
+    stretched.half_u = 0.5 * far_m;
+    stretched.centre = corner + u * stretched.half_u;
+    const auto all = allIndices(w.cloud.points.size());
+    const auto splits = residualSplits(w.cloud.points, all, stretched, 0.15, 0.04, 0.02, 60);
+    for (const SplitProposal& p : splits) {
+      EXPECT_EQ(p.part_a.size() + p.part_b.size(), all.size());
+    }
+    // The members' own rectangle still finds the door.
+    EXPECT_TRUE(residualSplit(w.cloud.points, all, w.rect, 0.15, 0.04, 0.02, 60).has_value());
+  }
+}
+
 }  // namespace
 }  // namespace pmap::em

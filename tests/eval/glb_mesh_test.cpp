@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstring>
 #include <fstream>
+#include <limits>
 
 #include "pmap/common/error.h"
 #include "pmap/products/map_gltf.h"
@@ -62,6 +65,31 @@ TEST(GlbMesh, MalformedFilesAreInputErrors) {
       .write(reinterpret_cast<const char*>(bytes.data()),
              static_cast<std::streamsize>(bytes.size()));
   EXPECT_THROW(readGlbTriangles(cut), InputError);
+}
+
+TEST(GlbMesh, Item12_NanPositionOrADirectoryIsAnInputError) {
+  products::MapModel m;
+  m.fine.vertices = {Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(0, 1, 123.25)};
+  m.fine.triangles = {{0, 1, 2}};
+  std::vector<std::uint8_t> bytes = products::encodeMapGlb(m, false);
+  const float mark = 123.25f, nan = std::numeric_limits<float>::quiet_NaN();
+  const auto* m8 = reinterpret_cast<const std::uint8_t*>(&mark);
+  const auto at = std::search(bytes.begin(), bytes.end(), m8, m8 + 4);
+  ASSERT_NE(at, bytes.end());
+  std::memcpy(&*at, &nan, 4);
+  const fs::path glb = tmpDir() / "nan.glb";
+  std::ofstream(glb, std::ios::binary)
+      .write(reinterpret_cast<const char*>(bytes.data()),
+             static_cast<std::streamsize>(bytes.size()));
+  try {
+    readGlbTriangles(glb);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("nan.glb: accessor "), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("POSITION 2 is not finite"), std::string::npos);
+  }
+  fs::create_directories(tmpDir() / "dir.glb");
+  EXPECT_THROW(readGlbTriangles(tmpDir() / "dir.glb"), InputError);
 }
 
 }  // namespace

@@ -3,6 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "pmap/common/error.h"
 
 namespace pmap::eval {
 namespace {
@@ -35,6 +39,62 @@ TEST(GroundTruthGeometry, CylinderAndBoxDistances) {
   EXPECT_TRUE(std::isnan(gt.distance(99, {0, 0, 0})));
   EXPECT_TRUE(gt.isClutter(5));
   EXPECT_FALSE(gt.isClutter(99));
+}
+
+/// A minimal gt.json with `field` (a JSON member) added to surfaces[0] /
+/// the document; returns the message readGroundTruth throws ("" if none).
+std::string groundTruthError(const std::string& name, const std::string& text) {
+  const std::filesystem::path dir = std::filesystem::path(PMAP_TEST_TMP_DIR) / "ground_truth";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / name) << text;
+  try {
+    readGroundTruth(dir / name);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string gtText(const std::string& surface_id, const std::string& hits,
+                   const std::string& sigma = "0.01") {
+  return "{\"world\": \"t\",\n \"sigma_m\": " + sigma +
+         ",\n \"poses\": [[0, 0, 0, 0, 0, 0, 0]],\n \"surfaces\": [{\"id\": " + surface_id +
+         ", \"kind\": \"wall\", \"corners\": [[0,0,0],[1,0,0],[1,0,1],[0,0,1]], "
+         "\"normal\": [0,1,0]}],\n \"structure_scans\": [{\"index\": 0, \"hits\": " +
+         hits + "}]}\n";
+}
+
+TEST(GroundTruthFile, Item12_ValidFileReads) {
+  EXPECT_EQ(groundTruthError("good.gt.json", gtText("3", "[3, -1, 3]")), "");
+}
+
+TEST(GroundTruthFile, Item12_NonFiniteAndNonIntegerValuesAreInputErrorsNamingTheElement) {
+  // The JSON parser refuses 1e999 (it would be inf); the message gives the line.
+  EXPECT_NE(groundTruthError("inf.gt.json", gtText("3", "[3]", "1e999"))
+                .find("inf.gt.json:2: not valid JSON: "),
+            std::string::npos);
+  EXPECT_NE(groundTruthError("nan.gt.json", gtText("3", "[3]", "NaN")).find("nan.gt.json:2: "),
+            std::string::npos);
+  EXPECT_NE(
+      groundTruthError("id.gt.json", gtText("1.5", "[3]")).find("surfaces[].id is not an integer"),
+      std::string::npos);
+  EXPECT_NE(groundTruthError("hit.gt.json", gtText("3", "[3, 1e20]"))
+                .find("structure_scans[index 0].hits[1] is not an integer in int range"),
+            std::string::npos);
+  EXPECT_NE(groundTruthError("big.gt.json", gtText("3", "[3, 99999999999999999999]"))
+                .find("hits[1] is not an integer"),
+            std::string::npos);
+}
+
+TEST(GroundTruthFile, Item12_DirectoryIsAnInputErrorNamingThePath) {
+  const std::filesystem::path dir = std::filesystem::path(PMAP_TEST_TMP_DIR) / "ground_truth_dir";
+  std::filesystem::create_directories(dir);
+  try {
+    readGroundTruth(dir);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), dir.string() + ": is a directory, not a file");
+  }
 }
 
 }  // namespace

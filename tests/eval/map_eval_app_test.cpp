@@ -4,10 +4,18 @@
 
 #include <gtest/gtest.h>
 
+#include <octomap/OcTree.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
 #include <fstream>
+#include <iterator>
+#include <limits>
 
 #include "pmap/common/error.h"
 #include "pmap/common/ply.h"
+#include "pmap/products/map_gltf.h"
 #include "surface_test_world.h"
 
 namespace pmap::eval {
@@ -110,6 +118,8 @@ MapEvalArgs writeWorld(const SurfaceTestWorld& w, const std::string& name, bool 
   std::ofstream(dir / "map" / "poses.txt")
       << "# timestamp x y z yaw pitch roll\n0.0 0 0 0 0 0 0\n10.0 5 0 0 0 0 0\n";
   writePointsPly(w.points, dir / "map" / "points.ply");
+  // Every point is in scan 0 (SurfaceTestWorld), seen from (5, 1, 1).
+  std::ofstream(dir / "map" / "scans.csv") << "scan,timestamp,label,x,y,z\n0,1.0,LASER_V,5,1,1\n";
   if (with_csv) {
     writeSurfacesCsv(w.surfaces, dir / "map" / "surfaces.csv");
   }
@@ -164,6 +174,251 @@ TEST(MapEvalApp, InconsistentMapFilesAreInputErrors) {
   const MapEvalArgs args = writeWorld(world(), "no_points");
   fs::remove(args.map_dir / "points.ply");
   EXPECT_THROW(evaluateMap(args), InputError);
+}
+
+// --- Issue 13: item 11 (the OctoMap baselines as .bt files) and item 12
+// (never over an input; directories and non-finite numbers are input errors).
+
+struct AppRun {
+  int exit_code = -1;
+  std::string err;  ///< what map-eval printed on stderr
+};
+
+AppRun runMapEval(const std::vector<std::string>& args) {
+  std::vector<const char*> argv = {"map-eval"};
+  for (const auto& a : args) {
+    argv.push_back(a.c_str());
+  }
+  ::testing::internal::CaptureStderr();
+  const int code = mapEvalMain(static_cast<int>(argv.size()), argv.data());
+  return {code, ::testing::internal::GetCapturedStderr()};
+}
+
+std::vector<std::string> cli(const MapEvalArgs& a) {
+  return {"--map", a.map_dir.string(), "--gt", a.gt.string(), "--out", a.out.string(), "-q"};
+}
+
+std::string fileBytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// One error line naming `fragment`, as doc/errors.md promises.
+void expectOneErrorLine(const AppRun& run, const std::string& fragment) {
+  EXPECT_EQ(run.err.rfind("map-eval: error: ", 0), 0u) << run.err;
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  EXPECT_NE(run.err.find(fragment), std::string::npos) << run.err;
+}
+
+/// Occupied voxels of a tree at its resolution (pruned leaves expanded).
+std::size_t occupiedVoxels(const octomap::OcTree& tree) {
+  std::size_t n = 0;
+  for (auto it = tree.begin_leafs(), end = tree.end_leafs(); it != end; ++it) {
+    if (tree.isNodeOccupied(*it)) {
+      const auto k = static_cast<std::size_t>(std::lround(it.getSize() / tree.getResolution()));
+      n += k * k * k;
+    }
+  }
+  return n;
+}
+
+TEST(MapEvalApp, Item11_WritesOctomapBaselines) {
+  MapEvalArgs args = writeWorld(world(), "item11");
+  args.out = args.map_dir / "eval.json";  // the usual place: allowed
+  const AppRun run = runMapEval(cli(args));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const json doc = json::parse(fileBytes(args.out));
+  ASSERT_EQ(doc["octomap"].size(), 2u);
+  const std::pair<std::string, double> expected[] = {{"octomap_5cm.bt", 0.05},
+                                                     {"octomap_10cm.bt", 0.10}};
+  for (std::size_t k = 0; k < 2; ++k) {
+    const json& e = doc["octomap"][k];
+    const fs::path bt = args.map_dir / expected[k].first;
+    EXPECT_EQ(e["bt_file"], bt.string());
+    ASSERT_TRUE(fs::is_regular_file(bt)) << bt;
+    EXPECT_EQ(fs::file_size(bt), e["file_bytes"].get<std::uintmax_t>());
+    octomap::OcTree tree(1.0);  // what octovis does with a .bt file
+    ASSERT_TRUE(tree.readBinary(bt.string())) << bt;
+    EXPECT_DOUBLE_EQ(tree.getResolution(), expected[k].second);
+    EXPECT_GT(tree.size(), 0u);
+    EXPECT_EQ(occupiedVoxels(tree), e["occupied_voxels"].get<std::size_t>());
+  }
+  for (const auto& entry : fs::directory_iterator(args.map_dir)) {
+    EXPECT_EQ(entry.path().string().find(".tmp-"), std::string::npos) << entry.path();
+  }
+}
+
+TEST(MapEvalApp, Item11_WithoutOutEverythingGoesToTheCurrentDirectory) {
+  const MapEvalArgs args = writeWorld(world(), "item11_no_out");
+  const fs::path cwd = fs::current_path();
+  const fs::path here = args.map_dir.parent_path() / "cwd";
+  fs::create_directories(here);
+  fs::current_path(here);
+  const AppRun run = runMapEval({"--map", args.map_dir.string(), "--gt", args.gt.string(), "-q"});
+  fs::current_path(cwd);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(fs::is_regular_file(here / "eval.json"));
+  EXPECT_TRUE(fs::is_regular_file(here / "octomap_5cm.bt"));
+  EXPECT_TRUE(fs::is_regular_file(here / "octomap_10cm.bt"));
+  EXPECT_EQ(json::parse(fileBytes(here / "eval.json"))["octomap"][0]["bt_file"], "octomap_5cm.bt");
+}
+
+TEST(MapEvalApp, Item12_RefusesToOverwriteGroundTruth) {
+  MapEvalArgs args = writeWorld(world(), "item12_gt");
+  const std::string before = fileBytes(args.gt);
+  args.out = args.gt;
+  const AppRun run = runMapEval(cli(args));
+  EXPECT_EQ(run.exit_code, 4);
+  expectOneErrorLine(run, "would overwrite the input file " + args.gt.string());
+  EXPECT_EQ(fileBytes(args.gt), before);
+  EXPECT_FALSE(fs::exists(args.gt.parent_path() / "octomap_5cm.bt"));
+}
+
+TEST(MapEvalApp, Item12_RefusesToOverwriteTheMapFilesItReads) {
+  for (const std::string name : {"poses.txt", "points.ply", "scans.csv", "surfaces.csv"}) {
+    MapEvalArgs args = writeWorld(world(), "item12_map");
+    const fs::path input = args.map_dir / name;
+    const std::string before = fileBytes(input);
+    args.out = input;
+    const AppRun run = runMapEval(cli(args));
+    EXPECT_EQ(run.exit_code, 4) << name;
+    expectOneErrorLine(run, "the input file " + input.string());
+    EXPECT_EQ(fileBytes(input), before) << name;
+    EXPECT_FALSE(fs::exists(args.map_dir / "octomap_5cm.bt")) << name;
+  }
+}
+
+TEST(MapEvalApp, Item12_BtFilesNeverReplaceAnInput) {
+  MapEvalArgs args = writeWorld(world(), "item12_bt");
+  const fs::path gt = args.gt.parent_path() / "octomap_10cm.bt";  // a ground truth so named
+  fs::rename(args.gt, gt);
+  args.gt = gt;
+  const std::string before = fileBytes(gt);
+  const AppRun run = runMapEval(cli(args));  // --out beside it
+  EXPECT_EQ(run.exit_code, 4);
+  expectOneErrorLine(run, "(written beside --out) would overwrite the input file " + gt.string());
+  EXPECT_EQ(fileBytes(gt), before);
+  EXPECT_FALSE(fs::exists(args.out));
+  EXPECT_FALSE(fs::exists(gt.parent_path() / "octomap_5cm.bt"));
+}
+
+TEST(MapEvalApp, Item12_LinksAndDirectoriesAsOutAreRefused) {
+  MapEvalArgs args = writeWorld(world(), "item12_links");
+  const std::string before = fileBytes(args.map_dir / "poses.txt");
+  fs::create_symlink(args.map_dir / "poses.txt", args.map_dir / "eval.json");
+  args.out = args.map_dir / "eval.json";
+  EXPECT_EQ(runMapEval(cli(args)).exit_code, 4);
+  fs::remove(args.out);
+  args.out = args.map_dir / ".." / "map" / "poses.txt";
+  EXPECT_EQ(runMapEval(cli(args)).exit_code, 4);
+  args.out = args.map_dir;
+  const AppRun run = runMapEval(cli(args));
+  EXPECT_EQ(run.exit_code, 4);
+  expectOneErrorLine(run, "--out is a directory");
+  EXPECT_EQ(fileBytes(args.map_dir / "poses.txt"), before);
+}
+
+TEST(MapEvalApp, Item12_DirectoryAsGtIsInputError) {
+  MapEvalArgs args = writeWorld(world(), "item12_gt_dir");
+  args.gt = args.map_dir.parent_path() / "gt_dir";
+  fs::create_directories(args.gt);
+  const AppRun run = runMapEval(cli(args));
+  EXPECT_EQ(run.exit_code, 2);
+  expectOneErrorLine(run, args.gt.string() + ": is a directory, not a file");
+}
+
+TEST(MapEvalApp, Item12_DirectoryAsAMapFileIsInputError) {
+  for (const std::string name :
+       {"poses.txt", "points.ply", "scans.csv", "surfaces.csv", "map.glb", "raw.glb"}) {
+    const MapEvalArgs args = writeWorld(world(), "item12_map_dir");
+    const fs::path file = args.map_dir / name;
+    fs::remove(file);
+    fs::create_directories(file);
+    const AppRun run = runMapEval(cli(args));
+    EXPECT_EQ(run.exit_code, 2) << name;
+    expectOneErrorLine(run, file.string() + ": ");
+  }
+  MapEvalArgs args = writeWorld(world(), "item12_map_is_a_file");
+  args.map_dir = args.gt;
+  const AppRun run = runMapEval(cli(args));
+  EXPECT_EQ(run.exit_code, 2);
+  expectOneErrorLine(run, args.gt.string() + ": not a directory");
+}
+
+TEST(MapEvalApp, Item12_NanInPointsPlyIsInputError) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const struct {
+    int vertex, axis;
+    double value;
+    std::string message;
+  } cases[] = {{7, 0, nan, "vertex 7: x is nan"}, {3, 2, -inf, "vertex 3: z is -inf"}};
+  for (const auto& c : cases) {
+    SurfaceTestWorld w = world();
+    w.points.xyz[c.vertex][c.axis] = c.value;
+    const MapEvalArgs args = writeWorld(w, "item12_nan");
+    const AppRun run = runMapEval(cli(args));
+    EXPECT_EQ(run.exit_code, 2) << c.message;
+    expectOneErrorLine(run, (args.map_dir / "points.ply").string() + ": " + c.message);
+    EXPECT_FALSE(fs::exists(args.out));
+  }
+}
+
+/// The line of `text` (1-based) holding `needle`.
+int lineOf(const std::string& text, const std::string& needle) {
+  const std::size_t at = text.find(needle);
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+}
+
+TEST(MapEvalApp, Item12_NonFiniteNumbersInEveryInputAreInputErrors) {
+  {  // gt.json: the parser refuses 1e999; the message gives the line
+    const MapEvalArgs args = writeWorld(world(), "item12_gt_inf");
+    std::string text = json::parse(fileBytes(args.gt)).dump(2);
+    const std::size_t at = text.find("\"sigma_m\": 0.01");
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, 15, "\"sigma_m\": 1e999");
+    std::ofstream(args.gt) << text;
+    const AppRun run = runMapEval(cli(args));
+    EXPECT_EQ(run.exit_code, 2);
+    expectOneErrorLine(
+        run, args.gt.string() + ":" + std::to_string(lineOf(text, "1e999")) + ": not valid JSON: ");
+  }
+  const struct {
+    std::string file, line, message;
+  } rows[] = {
+      {"poses.txt", "20.0 nan 0 0 0 0 0\n", "poses.txt:4: 'nan' is not a finite number"},
+      {"surfaces.csv", "7,0,0,1,inf,0,0,0,1,0,0,1,1,0,0,1,0,5\n",
+       "surfaces.csv:4: column 5 'inf' is not a finite number"},
+      {"scans.csv", "1,2.0,LASER_V,5,nan,1\n",
+       "scans.csv:3: column 5 'nan' is not a finite number"},
+  };
+  for (const auto& r : rows) {
+    const MapEvalArgs args = writeWorld(world(), "item12_csv_nan");
+    std::ofstream(args.map_dir / r.file, std::ios::app) << r.line;
+    const AppRun run = runMapEval(cli(args));
+    EXPECT_EQ(run.exit_code, 2) << r.file;
+    expectOneErrorLine(run, r.message);
+  }
+  {  // raw.glb with a NaN vertex
+    const MapEvalArgs args = writeWorld(world(), "item12_glb_nan");
+    products::MapModel m;
+    m.fine.vertices = {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(2, 0, 0),
+                       Eigen::Vector3d(1, 0, 123.25)};
+    m.fine.triangles = {{0, 1, 2}};
+    std::vector<std::uint8_t> bytes = products::encodeMapGlb(m, false);
+    const float mark = 123.25f, nan = std::numeric_limits<float>::quiet_NaN();
+    const auto* m8 = reinterpret_cast<const std::uint8_t*>(&mark);
+    const auto at = std::search(bytes.begin(), bytes.end(), m8, m8 + 4);
+    ASSERT_NE(at, bytes.end());
+    std::memcpy(&*at, &nan, 4);
+    std::ofstream(args.map_dir / "raw.glb", std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()),
+               static_cast<std::streamsize>(bytes.size()));
+    const AppRun run = runMapEval(cli(args));
+    EXPECT_EQ(run.exit_code, 2);
+    expectOneErrorLine(run, "raw.glb: accessor ");
+    expectOneErrorLine(run, "POSITION 2 is not finite");
+  }
 }
 
 }  // namespace

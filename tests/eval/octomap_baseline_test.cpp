@@ -7,6 +7,7 @@
 
 #include <octomap/OcTree.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -92,6 +93,32 @@ TEST(OctomapBaseline, BtContentIsWhatWriteBinaryWrites) {
   std::ostringstream written;
   ASSERT_TRUE(a.writeBinary(written));
   EXPECT_EQ(btFileContent(b), written.str());
+}
+
+TEST(OctomapBaseline, Item11_ResultKeepsItsBtFileForOctovis) {
+  OctomapOptions o;
+  o.resolution_m = 0.1;
+  const OctomapResult r = buildOctomap({{0, Vector3d::Zero()}}, wallScan(), o);
+  EXPECT_EQ(r.file_bytes, r.bt_file.size());
+  std::istringstream in(r.bt_file);
+  octomap::OcTree back(0.05);
+  ASSERT_TRUE(back.readBinary(in));
+  EXPECT_DOUBLE_EQ(back.getResolution(), 0.1);
+  std::size_t occupied = 0;
+  for (auto it = back.begin_leafs(), end = back.end_leafs(); it != end; ++it) {
+    if (back.isNodeOccupied(*it)) {
+      const auto n = static_cast<std::size_t>(std::lround(it.getSize() / 0.1));
+      occupied += n * n * n;
+    }
+  }
+  EXPECT_EQ(occupied, r.occupied_centres.size());
+}
+
+TEST(OctomapBaseline, Item11_FileNamesSayTheResolution) {
+  EXPECT_EQ(octomapFileName(0.05), "octomap_5cm.bt");
+  EXPECT_EQ(octomapFileName(0.10), "octomap_10cm.bt");
+  EXPECT_EQ(octomapFileName(0.025), "octomap_2.5cm.bt");
+  EXPECT_EQ(octomapFileName(1.0), "octomap_100cm.bt");
 }
 
 TEST(OctomapBaseline, PointsWithoutAnOriginAreAnInputError) {

@@ -8,6 +8,8 @@
 #include <mrpt/poses/CPosePDFGaussian.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <zlib.h>
+
 #include <fstream>
 
 #include "pmap/common/error.h"
@@ -159,6 +161,102 @@ TEST(RawlogReader, GuardedActionDecoderKeepsBothEstimationMethods) {
   EXPECT_NEAR(a1->poseChange->getMeanVal().x(), 1.5, 1e-12);
   EXPECT_NEAR(a1->poseChange->getMeanVal().phi(), -0.3, 1e-12);
   EXPECT_FALSE(reader.next(r));
+}
+
+// Issue 13, item 8: a file that does not start like an MRPT archive (a
+// JSON file given as the rawlog) is "not a rawlog", not a corrupt record.
+TEST(RawlogReader, Item8_JsonFileIsNotARawlog) {
+  const auto dir = testing::freshTestDir("reader_json");
+  std::ofstream(dir / "run.gt.json") << "{\n  \"world\": \"default\",\n  \"surfaces\": []\n}\n";
+  const std::string error = errorOf(dir / "run.gt.json");
+  EXPECT_NE(error.find("not a rawlog"), std::string::npos) << error;
+  EXPECT_EQ(error.find("Exception"), std::string::npos) << error;
+  // The same text gzip-compressed is still not a rawlog.
+  const std::string text = "{ \"a\": 1 }";
+  gzFile gz = gzopen((dir / "j.rawlog").c_str(), "wb");
+  gzwrite(gz, text.data(), static_cast<unsigned>(text.size()));
+  gzclose(gz);
+  EXPECT_NE(errorOf(dir / "j.rawlog").find("not a rawlog"), std::string::npos);
+}
+
+// A gzip member holding `bytes` (zlib's deflate with the gzip wrapper).
+std::string gzipMember(const std::string& bytes) {
+  z_stream zs{};
+  EXPECT_EQ(deflateInit2(&zs, 6, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY), Z_OK);
+  std::string out(deflateBound(&zs, static_cast<uLong>(bytes.size())) + 64, '\0');
+  zs.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()));
+  zs.avail_in = static_cast<uInt>(bytes.size());
+  zs.next_out = reinterpret_cast<Bytef*>(out.data());
+  zs.avail_out = static_cast<uInt>(out.size());
+  EXPECT_EQ(deflate(&zs, Z_FINISH), Z_STREAM_END);
+  out.resize(zs.total_out);
+  deflateEnd(&zs);
+  return out;
+}
+
+// A plain fixture split at a record boundary into two gzip members.
+struct TwoMembers {
+  std::string first, second;
+  std::size_t records = 0, records_in_first = 0;
+};
+
+TwoMembers twoMembers(const fs::path& dir) {
+  FixtureOptions o;
+  o.cycles = 10;
+  o.gzip = false;
+  testing::writeFixtureRawlog(dir / "plain.rawlog", o);
+  std::ifstream in(dir / "plain.rawlog", std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  RawlogReader reader(dir / "plain.rawlog");
+  RawlogRecord r;
+  std::vector<std::uint64_t> offsets;
+  while (reader.next(r)) {
+    offsets.push_back(r.offset);
+  }
+  TwoMembers m;
+  m.records = offsets.size();
+  m.records_in_first = offsets.size() / 2;
+  const std::size_t cut = offsets[m.records_in_first];
+  m.first = gzipMember(bytes.substr(0, cut));
+  m.second = gzipMember(bytes.substr(cut));
+  return m;
+}
+
+void writeBytes(const fs::path& p, const std::string& bytes) {
+  std::ofstream(p, std::ios::binary) << bytes;
+}
+
+// Issue 13, item 12: every member of a multi-member gzip is read, and damage
+// to the second member is reported, not taken for a clean end.
+TEST(RawlogReader, Item12_MultiMemberGzipIsReadToItsEnd) {
+  const auto dir = testing::freshTestDir("reader_members");
+  const TwoMembers m = twoMembers(dir);
+  writeBytes(dir / "both.rawlog", m.first + m.second);
+  EXPECT_EQ(countRecords(dir / "both.rawlog"), m.records);
+}
+
+TEST(RawlogReader, Item12_DamagedSecondMemberIsCorruption) {
+  const auto dir = testing::freshTestDir("reader_member_damage");
+  const TwoMembers m = twoMembers(dir);
+  std::string second = m.second;
+  second[0] = static_cast<char>(second[0] ^ 0x40);  // its magic byte
+  writeBytes(dir / "bad.rawlog", m.first + second);
+  const std::string error = errorOf(dir / "bad.rawlog");
+  EXPECT_NE(error.find("corrupt gzip data (member 1: "), std::string::npos) << error;
+  RawlogReaderOptions accept;
+  accept.accept_truncated = true;
+  EXPECT_FALSE(errorOf(dir / "bad.rawlog", accept).empty());  // corruption, not a truncation
+}
+
+TEST(RawlogReader, Item12_FileEndingOneByteIntoTheSecondMemberIsTruncated) {
+  const auto dir = testing::freshTestDir("reader_member_cut");
+  const TwoMembers m = twoMembers(dir);
+  writeBytes(dir / "cut.rawlog", m.first + m.second.substr(0, 1));
+  const std::string error = errorOf(dir / "cut.rawlog");
+  EXPECT_NE(error.find("truncated"), std::string::npos) << error;
+  RawlogReaderOptions accept;
+  accept.accept_truncated = true;
+  EXPECT_EQ(countRecords(dir / "cut.rawlog", accept), m.records_in_first);
 }
 
 }  // namespace

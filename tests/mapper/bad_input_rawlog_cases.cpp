@@ -66,7 +66,7 @@ std::vector<BadInputCase> fileCases() {
          std::ofstream(d / "t.rawlog") << "x y z\n1 2 3\n";
          return mapArgs(d / "t.rawlog", d);
        },
-       2, "record 0 at byte 0"},
+       2, "record 0 at byte 0: not a rawlog"},
       {"random_bytes",
        [](const fs::path& d) {
          Bytes b(4096, '\0');
@@ -142,14 +142,14 @@ std::vector<BadInputCase> recordCases() {
          o.vertical = false;
          return mapArgs(writeFixture(d, o), d);
        },
-       2, "no structure observations"},
+       1, "[Sensors] structure = LASER_V: no usable structure observation"},
       {"unknown_structure_label",
        [](const fs::path& d) {
          FixtureOptions o;
          o.laser_v_label = "LASER_X";
          return mapArgs(writeFixture(d, o), d);
        },
-       2, "no structure observations"},
+       1, "'LASER_X' (CObservation2DRangeScan) x 20"},
   };
 }
 

@@ -31,7 +31,7 @@ isPlanarMap = 1
 Trajectory run(const fs::path& rawlog) {
   const auto doc = config::IniDocument::parse(kIcpIni, "icp.ini");
   config::StrictMrptConfig cfg(doc, {"ICP", "MappingApplication*"});
-  PoseStage stage(std::make_unique<IcpPoseTracker>(cfg));
+  PoseStage stage(std::make_unique<IcpPoseTracker>(cfg), MotionLimits{});
   cfg.checkAllRead();
   input::RawlogReader reader(rawlog);
   input::ObservationSource source(reader, input::RoleClassifier({}), {});

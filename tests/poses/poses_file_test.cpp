@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
+#include <sstream>
 
 #include "pmap/common/error.h"
 #include "rawlog_fixtures.h"
@@ -43,6 +45,46 @@ TEST(PosesFile, RejectsMalformedFilesNamingTheLine) {
   EXPECT_NE(errorOf("1 0 0 0 0 0 0\n1 0 0 0 0 0 0\n").find("not after"), std::string::npos);
   EXPECT_NE(errorOf("# only a comment\n").find("no poses"), std::string::npos);
   EXPECT_THROW(readPosesFile("/nonexistent/poses.txt"), InputError);
+}
+
+// Issue 13, item 6: poses.tum in the TUM format ("t tx ty tz qx qy qz qw",
+// unit quaternion) that trajectory tools read.
+TEST(PosesFile, Item6_WritesTheTumFormat) {
+  const auto dir = testing::freshTestDir("poses_tum");
+  Trajectory t;
+  t.append(1767225600.5, TPose3D(1.5, -2.25, 0.125, 0.5, 0.0, 0.0));
+  t.append(1767225600.7, TPose3D(1.6, -2.25, 0.0, -3.1, 0.01, -0.02));
+  writeTumFile(dir / "poses.tum", t);
+  std::ifstream in(dir / "poses.tum");
+  std::string line;
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') {
+      continue;
+    }
+    std::istringstream fields(line);
+    std::vector<double> v;
+    double x;
+    while (fields >> x) {
+      v.push_back(x);
+    }
+    rows.push_back(v);
+  }
+  ASSERT_EQ(rows.size(), 2u);
+  for (const auto& r : rows) {
+    ASSERT_EQ(r.size(), 8u);
+    EXPECT_NEAR(r[4] * r[4] + r[5] * r[5] + r[6] * r[6] + r[7] * r[7], 1.0, 1e-8);
+  }
+  EXPECT_NEAR(rows[0][0], 1767225600.5, 1e-6);
+  EXPECT_NEAR(rows[0][3], 0.125, 1e-9);
+  // A pure yaw: q = (0, 0, sin(yaw / 2), cos(yaw / 2)).
+  EXPECT_NEAR(rows[0][6], std::sin(0.25), 1e-9);
+  EXPECT_NEAR(rows[0][7], std::cos(0.25), 1e-9);
+  // The yaw comes back from the quaternion of the second pose (with pitch and roll).
+  const auto& q = rows[1];
+  const double yaw =
+      std::atan2(2 * (q[7] * q[6] + q[4] * q[5]), 1 - 2 * (q[5] * q[5] + q[6] * q[6]));
+  EXPECT_NEAR(yaw, -3.1, 1e-6);
 }
 
 }  // namespace

@@ -78,7 +78,7 @@ TEST(MapGltf, ContainerAndBufferLayout) {
 TEST(MapGltf, QuadMeshesCountsBoundsAndTexCoords) {
   const MapModel m = test::texturedRoomModel();
   const auto p = test::parseGlb(encodeMapGlb(m, true));
-  EXPECT_EQ(p.json["meshes"].size(), m.quads.size() + 1);
+  EXPECT_EQ(p.json["meshes"].size(), m.quads.size() + 2);  // + fine triangles, path
   for (const TexturedQuad& q : m.quads) {
     const std::string name =
         "surface_" + std::to_string(q.surface_id) + "_" + std::to_string(q.tile);
@@ -154,6 +154,57 @@ TEST(MapGltf, FineTrianglesWithVertexColours) {
   const std::vector<float> rgb = test::floatsOf(p, prim["attributes"]["COLOR_0"]);
   EXPECT_EQ(rgb, (std::vector<float>{1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1}));
   EXPECT_FALSE(prim["attributes"].contains("NORMAL"));
+}
+
+const json& nodeNamed(const test::GlbParts& p, const std::string& name) {
+  for (const json& n : p.json["nodes"]) {
+    if (n.value("name", "") == name) {
+      return n;
+    }
+  }
+  throw std::runtime_error("no node " + name);
+}
+
+// viewer.html's inspector reads these (doc/viewer.md).
+TEST(MapGltf, Item10_RectangleNodesCarrySurfaceIdTileAndSupport) {
+  MapModel m = test::texturedRoomModel();
+  m.support = {{3, 1200}, {7, 450}};  // surfaces 8 and 12: unknown
+  const auto p = test::parseGlb(encodeMapGlb(m, true));
+  for (const TexturedQuad& q : m.quads) {
+    const json& extras =
+        nodeNamed(p, "surface_" + std::to_string(q.surface_id) + "_" + std::to_string(q.tile))
+            .at("extras");
+    EXPECT_EQ(extras["surface_id"], q.surface_id);
+    EXPECT_EQ(extras["tile"], q.tile);
+    EXPECT_EQ(extras.contains("support"), q.surface_id == 3 || q.surface_id == 7) << extras;
+  }
+  EXPECT_EQ(nodeNamed(p, "surface_3_0")["extras"]["support"], 1200);
+  EXPECT_EQ(nodeNamed(p, "surface_7_1")["extras"]["support"], 450);
+  EXPECT_FALSE(nodeNamed(p, "fine_triangles").contains("extras"));
+}
+
+TEST(MapGltf, Item10_PathIsALineStripUnderTheRoot) {
+  MapModel m = test::texturedRoomModel();
+  m.path = {{1, 1, 0}, {2, 1.5, 0}, {3, 2, 0.25}};
+  const auto p = test::parseGlb(encodeMapGlb(m, false));
+  const json& prim = meshNamed(p, "robot_path")["primitives"][0];
+  EXPECT_EQ(prim["mode"], 3);
+  EXPECT_FALSE(prim.contains("indices"));
+  const json& pos = p.json["accessors"][prim["attributes"]["POSITION"].get<int>()];
+  EXPECT_EQ(pos["count"], 3);
+  EXPECT_EQ(pos["min"], json({1.0, 1.0, 0.0}));
+  EXPECT_EQ(pos["max"], json({3.0, 2.0, 0.25}));
+  EXPECT_EQ(test::floatsOf(p, prim["attributes"]["POSITION"]),
+            (std::vector<float>{1, 1, 0, 2, 1.5f, 0, 3, 2, 0.25f}));
+  const json& root = p.json["nodes"][p.json["scenes"][0]["nodes"][0].get<int>()];
+  bool under_root = false;
+  for (const json& child : root["children"]) {
+    under_root |= p.json["nodes"][child.get<int>()]["name"] == "robot_path";
+  }
+  EXPECT_TRUE(under_root);
+
+  m.path.resize(1);  // one position is no line
+  EXPECT_THROW(meshNamed(test::parseGlb(encodeMapGlb(m, false)), "robot_path"), std::runtime_error);
 }
 
 TEST(MapGltf, RootNodeTurnsZUpIntoYUp) {

@@ -50,6 +50,13 @@ TEST(MapModelCheck, RejectsNonFiniteGeometry) {
   expectRejected(m, "non-finite colour");
 }
 
+// map.glb draws the path as a line (its POSITION bounds must be finite).
+TEST(MapModelCheck, Item10_RejectsANonFinitePathPosition) {
+  MapModel m = test::texturedRoomModel();
+  m.path[1].x() = kNaN;
+  expectRejected(m, "path: non-finite position");
+}
+
 TEST(MapModelCheck, RejectsTextureNamingConflicts) {
   MapModel m = test::texturedRoomModel();
   m.quads[1].surface_id = m.quads[0].surface_id;

@@ -34,8 +34,7 @@ TEST(RawlogWriter, ObservationsFormatIsAFlatSequence) {
     for (int k = 0; k < 3; ++k) {
       w.write(cycle(k));
     }
-    EXPECT_FALSE(std::filesystem::exists(dir / "a.rawlog"));
-    w.commit();
+    w.finish();  // writes the path it was given (the caller's temporary)
     EXPECT_EQ(w.objectsWritten(), 9u);
   }
   const auto objects = test::readRawlog(dir / "a.rawlog");
@@ -56,7 +55,7 @@ TEST(RawlogWriter, SensoryFrameFormatAlternatesActionsAndFrames) {
   for (int k = 0; k < 3; ++k) {
     w.write(cycle(k));
   }
-  w.commit();
+  w.finish();
   const auto objects = test::readRawlog(dir / "b.rawlog");
   ASSERT_EQ(objects.size(), 6u);
   for (std::size_t i = 0; i < objects.size(); i += 2) {
@@ -67,7 +66,7 @@ TEST(RawlogWriter, SensoryFrameFormatAlternatesActionsAndFrames) {
   }
 }
 
-TEST(RawlogWriter, UncommittedWriterLeavesNothing) {
+TEST(RawlogWriter, UnfinishedWriterLeavesNothing) {
   const auto dir = test::freshDir("rawlog_abort");
   {
     RawlogWriter w(dir / "c.rawlog", RawlogFormat::kObservations);

@@ -6,7 +6,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -33,6 +35,24 @@ inline std::string readBytes(const std::filesystem::path& p) {
 inline std::filesystem::path writeText(const std::filesystem::path& p, const std::string& text) {
   std::ofstream(p, std::ios::binary) << text;
   return p;
+}
+
+/// A file as snapshot() records it: its size and a hash of its bytes
+/// (readable when a test prints a difference).
+inline std::string fileEntry(const std::string& bytes) {
+  return std::to_string(bytes.size()) + " bytes, hash " +
+         std::to_string(std::hash<std::string>{}(bytes));
+}
+
+/// Every file and directory under `dir`: relative path -> "<dir>" or
+/// fileEntry(its bytes). Equal snapshots are identical trees.
+inline std::map<std::string, std::string> snapshot(const std::filesystem::path& dir) {
+  std::map<std::string, std::string> out;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir)) {
+    out[std::filesystem::relative(e.path(), dir).string()] =
+        e.is_directory() ? "<dir>" : fileEntry(readBytes(e.path()));
+  }
+  return out;
 }
 
 /// Every object of a rawlog, read one by one until EOF (as RawLogViewer does).

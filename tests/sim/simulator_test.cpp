@@ -8,10 +8,13 @@
 #include <mrpt/obs/CObservationImage.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose3D.h>
+#include <csignal>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "pmap/common/error.h"
+#include "pmap/common/interrupt.h"
 #include "sim_test_support.h"
 
 namespace pmap::sim {
@@ -284,6 +287,52 @@ TEST(Simulator, NoCamerasAndDurationCut) {
   EXPECT_EQ(s.cycles, 5u);  // t = 0 .. 0.8 s (the V scan of cycle k is at t_k + 0.1)
   EXPECT_EQ(test::readRawlog(dir / "run.rawlog").size(), 3u * 5u);
   EXPECT_TRUE(fs::exists(dir / "run_Images"));  // the poster image is still written
+}
+
+// A rename fails in the middle of the commit (the backup name of poses.txt is
+// taken by a non-empty directory: EISDIR after the images and gt.json were
+// moved aside): the earlier set stays whole and no temporary remains.
+TEST(Simulator, Item12_FailedRenameKeepsOldSet) {
+  const auto dir = test::freshDir("sim_failed_rename");
+  simulate(dir, RawlogFormat::kObservations, 5, 1.0);
+  const fs::path blocker = dir / ("run.poses.txt.old-" + std::to_string(::getpid()));
+  fs::create_directories(blocker / "keep");
+  const auto before = test::snapshot(dir);
+  ASSERT_GT(before.size(), 6u);  // 3 files, the images and the blocker
+  try {
+    simulate(dir, RawlogFormat::kSensoryFrames, 6, 2.0);
+    FAIL() << "no OutputError";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("run.poses.txt: cannot move the previous output aside"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(test::snapshot(dir), before);
+}
+
+TEST(Simulator, Item12_ADirectoryAtTheRawlogIsRefusedBeforeAnyWork) {
+  const auto dir = test::freshDir("sim_rawlog_dir");
+  fs::create_directories(dir / "run.rawlog" / "keep");
+  test::writeText(dir / "tiny.json", test::tinyWorldJson());
+  const auto before = test::snapshot(dir);
+  EXPECT_THROW(simulate(dir, RawlogFormat::kObservations), OutputError);
+  EXPECT_EQ(test::snapshot(dir), before);
+}
+
+TEST(Simulator, Item12_InterruptKeepsOldSetAndRemovesTheTemporaries) {
+  const auto dir = test::freshDir("sim_interrupt");
+  simulate(dir, RawlogFormat::kObservations, 5, 1.0);
+  const auto before = test::snapshot(dir);
+  ::signal(SIGTERM, SIG_DFL);  // in case the test runner's parent ignored it
+  InterruptGuard guard;
+  ::raise(SIGTERM);  // recorded; run() stops at its first check, after staging
+  try {
+    simulate(dir, RawlogFormat::kObservations, 6, 2.0);
+    FAIL() << "no Interrupted";
+  } catch (const Interrupted& e) {
+    EXPECT_EQ(e.exitCode(), 128 + SIGTERM);
+  }
+  EXPECT_EQ(test::snapshot(dir), before);
 }
 
 }  // namespace

@@ -63,5 +63,22 @@ TEST(TextureTile, ThinAndDegenerateQuads) {
   EXPECT_TRUE(planTiles({}, o).empty());
 }
 
+// Issue 13, item 12: a thin quad 1e9 m long (geometry from bad poses) gets a
+// bounded number of tiles of bounded size, not an int overflow.
+TEST(TextureTile, Item12_AbsurdlyLongQuadGetsBoundedTiles) {
+  TextureOptions o;
+  const std::vector<TextureTile> tiles = planTiles({test::wallQuad(3, 0.0, 1e9, 0.0, 0.01)}, o);
+  ASSERT_FALSE(tiles.empty());
+  EXPECT_LE(tiles.size(), 4096u);
+  double length = 0;
+  for (const TextureTile& t : tiles) {
+    EXPECT_GE(t.width, 1);
+    EXPECT_LE(t.width, 2048);
+    EXPECT_GE(t.height, 1);
+    length += t.length_u;
+  }
+  EXPECT_NEAR(length, 1e9, 1.0);
+}
+
 }  // namespace
 }  // namespace pmap::texture

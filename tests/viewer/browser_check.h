@@ -13,6 +13,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace pmap::test {
 
@@ -63,6 +64,24 @@ inline int runScreenshot(const BrowserTools& tools, const std::filesystem::path&
                               tools.tools_dir + "/screenshot.js' '" + html.string() + "' '" +
                               png.string() + "' --points --report '" + report.string() + "' > '" +
                               log_file.string() + "' 2>&1";
+  const int status = std::system(command.c_str());
+  log = readAll(log_file);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/// Runs probe.js with `steps` (doc/viewer.md, tools/viewer/probe.js); returns
+/// its exit status (-1: killed), its output in `log`.
+inline int runProbe(const BrowserTools& tools, const std::filesystem::path& html,
+                    const std::filesystem::path& report, const std::vector<std::string>& steps,
+                    std::string& log) {
+  const std::filesystem::path log_file = report.string() + ".log";
+  std::string command = "PMAP_CHROMIUM='" + chromium(tools) + "' '" + tools.node + "' '" +
+                        tools.tools_dir + "/probe.js' '" + html.string() + "' '" + report.string() +
+                        "'";
+  for (const std::string& step : steps) {
+    command += " '" + step + "'";
+  }
+  command += " > '" + log_file.string() + "' 2>&1";
   const int status = std::system(command.c_str());
   log = readAll(log_file);
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -1,24 +1,26 @@
-// The heads-up display: the map's title and counts, the raw-points toggle and
-// a hint for the mouse controls. Plain DOM, styled by viewer.template.html.
+// The heads-up display: the map's title and counts, the toggles (raw points,
+// ceilings, see-through outer sides, robot path), the "frame all" button and a
+// hint for the mouse. Plain DOM, styled by viewer.template.html.
 
-function addLine(parent, label, value) {
+function addLine(parent, label, value, before = null) {
   const line = document.createElement('div');
   line.className = 'pmap-line';
   line.textContent = `${label}: ${value}`;
-  parent.appendChild(line);
+  parent.insertBefore(line, before);
   return line;
 }
 
-function formatValue(value) {
+export function formatValue(value) {
   return typeof value === 'number' ? value.toLocaleString('en-US') : String(value);
 }
 
 /**
  * Builds the HUD in #pmap-hud. `info` is the caller's JSON: its "title" heads
  * the HUD, its other scalar entries (surfaces, ...) are listed as counts.
- * Returns {setTriangles(n), pointsCheckbox}.
+ * Returns {addLine(label, value), addToggle(...), addButton(...), addHint(text),
+ * setTriangles(n)}; controls appear in the order they are added.
  */
-export function createHud(info, points, onPointsToggled) {
+export function createHud(info) {
   const hud = document.getElementById('pmap-hud');
   const title = document.createElement('div');
   title.className = 'pmap-title';
@@ -29,21 +31,45 @@ export function createHud(info, points, onPointsToggled) {
     addLine(hud, key.replace(/_/g, ' '), formatValue(value));
   }
   const triangles = addLine(hud, 'triangles drawn', '-');
-  const label = document.createElement('label');
-  label.className = 'pmap-toggle';
-  const checkbox = document.createElement('input');
-  checkbox.type = 'checkbox';
-  checkbox.id = 'pmap-points-toggle';
-  checkbox.disabled = points.shown === 0;
-  checkbox.addEventListener('change', () => onPointsToggled(checkbox.checked));
-  label.append(checkbox, ` raw points (${formatValue(points.shown)} of ${formatValue(points.total)})`);
-  hud.appendChild(label);
-  const hint = document.createElement('div');
-  hint.className = 'pmap-hint';
-  hint.textContent = 'drag: rotate · right-drag: pan · wheel: zoom';
-  hud.appendChild(hint);
+  const controls = document.createElement('div');
+  controls.className = 'pmap-controls';
+  hud.appendChild(controls);
   return {
+    /** A "label: value" line after the counts (before the controls). */
+    addLine: (label, value) => addLine(hud, label, value, controls),
+    /** A checkbox `id` labelled `text`; onChange(checked). Returns the checkbox. */
+    addToggle(id, text, {checked = false, disabled = false, title = ''}, onChange) {
+      const label = document.createElement('label');
+      label.className = 'pmap-toggle';
+      label.title = title;
+      const checkbox = document.createElement('input');
+      checkbox.type = 'checkbox';
+      checkbox.id = id;
+      checkbox.checked = checked;
+      checkbox.disabled = disabled;
+      checkbox.addEventListener('change', () => onChange(checkbox.checked));
+      label.append(checkbox, ` ${text}`);
+      controls.appendChild(label);
+      return checkbox;
+    },
+    /** A button `id` labelled `text`; onClick(). Returns the button. */
+    addButton(id, text, title, onClick) {
+      const button = document.createElement('button');
+      button.type = 'button';
+      button.id = id;
+      button.className = 'pmap-button';
+      button.textContent = text;
+      button.title = title;
+      button.addEventListener('click', onClick);
+      controls.appendChild(button);
+      return button;
+    },
+    addHint(text) {
+      const hint = document.createElement('div');
+      hint.className = 'pmap-hint';
+      hint.textContent = text;
+      hud.appendChild(hint);
+    },
     setTriangles: (n) => { triangles.textContent = `triangles drawn: ${formatValue(n)}`; },
-    pointsCheckbox: checkbox,
   };
 }

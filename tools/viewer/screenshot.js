@@ -16,18 +16,9 @@
 'use strict';
 const fs = require('fs');
 const path = require('path');
-const {execFileSync} = require('child_process');
+const {die: dieAs, viewerState, openViewer, withViewerPage, failureMessage} = require('./browser.js');
 
-const CHROMIUM_ARGS = [
-  '--no-sandbox', '--disable-gpu', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
-  '--disable-background-networking', '--disable-component-update', '--disable-sync',
-  '--no-first-run',
-];
-
-function die(status, message) {
-  console.error(`screenshot.js: ${message}`);
-  process.exit(status);
-}
+const die = (status, message) => dieAs('screenshot.js', status, message);
 
 function parseArgs(argv) {
   const options = {points: false, report: null, width: 1280, height: 800, timeoutMs: 20000};
@@ -51,39 +42,6 @@ function parseArgs(argv) {
   return options;
 }
 
-function findChromium() {
-  const candidates = [process.env.PMAP_CHROMIUM, '/usr/bin/chromium'].filter(Boolean);
-  for (const candidate of candidates) {
-    if (fs.existsSync(candidate)) return candidate;
-  }
-  try {
-    return execFileSync('sh', ['-c', 'command -v chromium'], {encoding: 'utf8'}).trim();
-  } catch {
-    return die(2, 'chromium not found (install Debian\'s chromium: apt-get install chromium, ' +
-                  'or set PMAP_CHROMIUM)');
-  }
-}
-
-function loadPlaywright() {
-  try {
-    return require('playwright-core');
-  } catch {
-    return die(2, `playwright-core not found in ${path.join(__dirname, 'node_modules')}: ` +
-                  'run npm ci --prefix tools/viewer');
-  }
-}
-
-/** Records every request that is not to the page itself (file:, data:, blob:). */
-function watchPage(page, log) {
-  page.on('request', (request) => {
-    if (!/^(file|data|blob):/.test(request.url())) log.externalRequests.push(request.url());
-  });
-  page.on('console', (message) => {
-    if (message.type() === 'error') log.consoleErrors.push(message.text());
-  });
-  page.on('pageerror', (error) => log.pageErrors.push(error.message));
-}
-
 async function rect(page, selector) {
   return page.$eval(selector, (element) => {
     const r = element.getBoundingClientRect();
@@ -92,17 +50,8 @@ async function rect(page, selector) {
   });
 }
 
-async function viewerState(page, timeoutMs, condition) {
-  await page.waitForFunction(condition, null, {timeout: timeoutMs});
-  return page.evaluate(() => ({...window.pmapViewer}));
-}
-
 async function drive(page, options, log) {
-  await page.goto(`file://${options.html}`);
-  log.initial = await viewerState(page, options.timeoutMs,
-                                  () => window.pmapViewer && (window.pmapViewer.ready ||
-                                                              window.pmapViewer.error));
-  if (!log.initial.ready) throw new Error(`the viewer failed: ${log.initial.error}`);
+  log.initial = await openViewer(page, options.html, options.timeoutMs);
   if (options.points) {
     log.toggleDisabled = await page.isDisabled('#pmap-points-toggle');  // no raw points
     if (!log.toggleDisabled) await page.check('#pmap-points-toggle');
@@ -118,32 +67,11 @@ async function drive(page, options, log) {
 
 async function main() {
   const options = parseArgs(process.argv.slice(2));
-  const executablePath = findChromium();
-  const {chromium} = loadPlaywright();
-  const log = {html: options.html, screenshot: options.png, externalRequests: [],
-               consoleErrors: [], pageErrors: []};
-  const browser = await chromium
-      .launch({executablePath, headless: true, args: CHROMIUM_ARGS, timeout: 30000})
-      .catch((error) => die(2, `cannot start ${executablePath}: ${error.message.split('\n')[0]}`));
-  let failure = null;
-  try {
-    log.browser = browser.version();
-    const context = await browser.newContext({
-      viewport: {width: options.width, height: options.height}, deviceScaleFactor: 1,
-      offline: true});
-    const page = await context.newPage();
-    watchPage(page, log);
-    await drive(page, options, log);
-  } catch (error) {
-    failure = error;
-  } finally {
-    await browser.close();
-  }
-  if (options.report) fs.writeFileSync(options.report, JSON.stringify(log, null, 2) + '\n');
-  if (failure) {
-    const errors = [...log.pageErrors, ...log.consoleErrors].map((e) => e.split('\n')[0]).join(' | ');
-    die(1, `${options.html}: ${failure.message.split('\n')[0]}${errors ? ` (page: ${errors})` : ''}`);
-  }
+  const {log, failure} = await withViewerPage('screenshot.js', options,
+                                              (page, log) => drive(page, options, log));
+  const report = {html: options.html, screenshot: options.png, ...log};
+  if (options.report) fs.writeFileSync(options.report, JSON.stringify(report, null, 2) + '\n');
+  if (failure) die(1, failureMessage(options.html, failure, log));
   const state = log.afterToggle ?? log.initial;
   console.log(`${path.basename(options.html)}: ${state.triangles} triangles and ${state.points} ` +
               `points drawn (${log.browser}) -> ${options.png}`);

@@ -9,8 +9,13 @@
 import * as THREE from 'three';
 import {GLTFLoader} from 'three/addons/loaders/GLTFLoader.js';
 import {OrbitControls} from 'three/addons/controls/OrbitControls.js';
+import {boxInView, frameBox, viewDirection} from './camera_fit.js';
 import {readEmbeddedData} from './embedded_data.js';
-import {createHud} from './hud.js';
+import {createHud, formatValue} from './hud.js';
+import {createInspector} from './inspector.js';
+import {collectSurfaces, surfaceInfo} from './map_surfaces.js';
+import {extractRobotPath} from './robot_path.js';
+import {surfacePixels} from './visibility.js';
 
 const BACKGROUND = 0xeef1f4;
 
@@ -87,20 +92,6 @@ function floorGrid(box) {
   return grid;
 }
 
-/** Puts the camera south-west of and above `box`, looking at its centre. */
-function frameBox(camera, controls, box) {
-  const center = box.getCenter(new THREE.Vector3());
-  const radius = Math.max(box.getSize(new THREE.Vector3()).length() / 2, 0.5);
-  const distance = (0.9 * radius) / Math.sin(THREE.MathUtils.degToRad(camera.fov / 2));
-  const direction = new THREE.Vector3(-0.55, -0.75, 0.65).normalize();
-  camera.position.copy(center).addScaledVector(direction, distance);
-  camera.near = Math.max(distance / 1000, 0.01);
-  camera.far = distance * 20;
-  camera.updateProjectionMatrix();
-  controls.target.copy(center);
-  controls.update();
-}
-
 function createRenderer() {
   const renderer = new THREE.WebGLRenderer({antialias: true});
   renderer.setPixelRatio(window.devicePixelRatio);
@@ -108,6 +99,76 @@ function createRenderer() {
   renderer.domElement.id = 'pmap-canvas';
   document.body.appendChild(renderer.domElement);
   return renderer;
+}
+
+/** The HUD's controls; `view` re-renders and holds what they act on. */
+function addControls(hud, data, view) {
+  const {points, surfaces, path, inspector, render} = view;
+  const ceilings = surfaces.list.filter((s) => s.kind === 'ceiling').length;
+  if (path) hud.addLine('robot path', `${formatValue(Math.round(path.lengthM * 10) / 10)} m`);
+  hud.addToggle('pmap-points-toggle',
+                `raw points (${formatValue(data.points.shown)} of ${formatValue(data.points.total)})`,
+                {disabled: data.points.shown === 0}, (visible) => {
+                  if (points) points.visible = visible;
+                  render();
+                });
+  hud.addToggle('pmap-ceilings-toggle', `ceilings (${ceilings})`,
+                {checked: true, disabled: ceilings === 0}, (visible) => {
+                  surfaces.setCeilingsVisible(visible);
+                  if (!visible && inspector.selected()?.kind === 'ceiling') inspector.clear();
+                  render();
+                });
+  hud.addToggle('pmap-see-through-toggle', 'see-through outer sides',
+                {checked: true, disabled: surfaces.list.length === 0,
+                 title: 'draw the side of a surface the robot did not see see-through, ' +
+                        'so near walls and the ceiling do not hide the rooms'},
+                (enabled) => {
+                  surfaces.setSeeThrough(enabled);
+                  render();
+                });
+  hud.addToggle('pmap-path-toggle', 'robot path', {checked: Boolean(path), disabled: !path},
+                (visible) => {
+                  if (path) path.object.visible = visible;
+                  render();
+                });
+  hud.addButton('pmap-frame-all', 'frame all', 'fit the view to the whole map', view.frameAll);
+  hud.addHint('drag: rotate · right-drag: pan · wheel: zoom · click: inspect a surface');
+}
+
+/** What the page reports after each frame (window.pmapViewer, doc/viewer.md). */
+function viewerState(drawn, view, modelTriangles) {
+  const {camera, controls, box, points, surfaces, path, inspector} = view;
+  const round = (v) => v.toArray().map((x) => Number(x.toFixed(3)));
+  return {
+    ready: true,
+    triangles: drawn.triangles,
+    points: drawn.points,
+    modelTriangles,
+    pointsVisible: points ? points.visible : false,
+    frames: (window.pmapViewer?.frames ?? 0) + 1,
+    surfaces: surfaces.list.length,
+    ceilingsVisible: surfaces.ceilingsVisible,
+    seeThrough: surfaces.seeThroughEnabled,
+    path: path ? {visible: path.object.visible, positions: path.positions,
+                  length_m: Number(path.lengthM.toFixed(3))} : null,
+    selected: inspector.selected(),
+    boxInView: boxInView(camera, box),
+    box: {min: round(box.min), max: round(box.max)},
+    camera: {position: round(camera.position), target: round(controls.target)},
+  };
+}
+
+/** Hooks for the tests (tools/viewer/probe.js): plain functions, not state. */
+function testHooks(renderer, scene, view) {
+  return {
+    surfaces: () => view.surfaces.list.map(surfaceInfo),
+    surfacePixels: (options) => {
+      const result = surfacePixels(renderer, scene, view.camera, view.surfaces, view.overlay,
+                                   options);
+      view.render();
+      return result;
+    },
+  };
 }
 
 async function start() {
@@ -120,8 +181,16 @@ async function start() {
   const points = data.positions.length ? rawPoints(data.positions) : null;
   if (model) scene.add(model);
   if (points) scene.add(points);
+  scene.updateMatrixWorld(true);
   const box = sceneBox(model, points);
   scene.add(floorGrid(box));
+  const markerRadius = Math.max(0.05, box.getSize(new THREE.Vector3()).length() / 250);
+  const path = model ? extractRobotPath(model, markerRadius) : null;
+  // The path is drawn in a second pass, over the map's depth, so that
+  // `triangles` counts the map's triangles alone.
+  const overlay = new THREE.Scene();
+  if (path) overlay.add(path.object);
+  const surfaces = collectSurfaces(model ?? new THREE.Group(), box);
 
   const camera = new THREE.PerspectiveCamera(50, window.innerWidth / window.innerHeight, 0.1, 1000);
   camera.up.set(0, 0, 1);
@@ -129,30 +198,33 @@ async function start() {
   frameBox(camera, controls, box);
 
   const modelTriangles = model ? countTriangles(model) : 0;
-  const hud = createHud(data.info, data.points, (visible) => {
-    if (points) points.visible = visible;
-    render();
-  });
-  const render = () => {
+  const view = {camera, controls, box, points, surfaces, path, overlay};
+  view.render = () => {
+    surfaces.update(camera);
     renderer.render(scene, camera);
-    hud.setTriangles(renderer.info.render.triangles);
-    window.pmapViewer = {
-      ready: true,
-      triangles: renderer.info.render.triangles,
-      points: renderer.info.render.points,
-      modelTriangles,
-      pointsVisible: points ? points.visible : false,
-      frames: (window.pmapViewer?.frames ?? 0) + 1,
-    };
+    const drawn = {...renderer.info.render};
+    renderer.autoClear = false;
+    renderer.render(overlay, camera);
+    renderer.autoClear = true;
+    view.hud?.setTriangles(drawn.triangles);
+    window.pmapViewer = viewerState(drawn, view, modelTriangles);
   };
-  controls.addEventListener('change', render);
+  view.frameAll = () => {
+    frameBox(camera, controls, box, viewDirection(camera, controls));
+    view.render();
+  };
+  view.inspector = createInspector(renderer.domElement, camera, surfaces, view.render);
+  view.hud = createHud(data.info);
+  addControls(view.hud, data, view);
+  window.pmapViewerTest = testHooks(renderer, scene, view);
+  controls.addEventListener('change', view.render);
   window.addEventListener('resize', () => {
     camera.aspect = window.innerWidth / window.innerHeight;
     camera.updateProjectionMatrix();
     renderer.setSize(window.innerWidth, window.innerHeight);
-    render();
+    view.render();
   });
-  render();
+  view.render();
 }
 
 start().catch((error) => {

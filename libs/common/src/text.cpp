@@ -162,4 +162,25 @@ std::string escapeHtml(std::string_view text) {
   return out;
 }
 
+std::string joinLines(const std::vector<std::string>& lines) {
+  std::string out;
+  for (const std::string& l : lines) {
+    out += (out.empty() ? "" : "\n") + l;
+  }
+  return out;
+}
+
+std::vector<std::string> splitLines(std::string_view text) {
+  std::vector<std::string> lines;
+  std::size_t pos = 0;
+  while (pos <= text.size()) {
+    const auto end = std::min(text.find('\n', pos), text.size());
+    if (end > pos) {
+      lines.emplace_back(text.substr(pos, end - pos));
+    }
+    pos = end + 1;
+  }
+  return lines;
+}
+
 }  // namespace pmap

@@ -101,9 +101,8 @@ void SectionReader::record(const std::string& key, const std::string& value, boo
   }
 }
 
-void SectionReader::parseError(const std::string& key, const IniValue& v,
-                               const std::string& what) const {
-  throw ConfigError(v.file + ":" + std::to_string(v.line) + ": [" + section_ + "] " + key + " = '" +
+void SectionReader::parseError(const std::string& key, const IniValue& v, const std::string& what) {
+  errors_.push_back(v.file + ":" + std::to_string(v.line) + ": [" + section_ + "] " + key + " = '" +
                     v.value + "': " + what);
 }
 
@@ -111,7 +110,7 @@ void SectionReader::read(const std::string& key, double& value) {
   if (const IniValue* v = lookup(key)) {
     const auto parsed = parseDouble(v->value);
     if (!parsed) {
-      parseError(key, *v, "not a number");
+      return parseError(key, *v, "not a number");
     }
     value = *parsed;
     record(key, v->value, false);
@@ -124,7 +123,7 @@ void SectionReader::read(const std::string& key, std::int64_t& value) {
   if (const IniValue* v = lookup(key)) {
     const auto parsed = parseInt(v->value);
     if (!parsed) {
-      parseError(key, *v, integerError(v->value, "a 64-bit integer"));
+      return parseError(key, *v, integerError(v->value, "a 64-bit integer"));
     }
     value = *parsed;
     record(key, v->value, false);
@@ -138,7 +137,7 @@ void SectionReader::read(const std::string& key, int& value) {
     const auto parsed = parseInt(v->value);
     if (!parsed || *parsed < std::numeric_limits<int>::min() ||
         *parsed > std::numeric_limits<int>::max()) {
-      parseError(key, *v, integerError(v->value, "int"));
+      return parseError(key, *v, integerError(v->value, "int"));
     }
     value = static_cast<int>(*parsed);
     record(key, v->value, false);
@@ -151,7 +150,7 @@ void SectionReader::read(const std::string& key, bool& value) {
   if (const IniValue* v = lookup(key)) {
     const auto parsed = parseBool(v->value);
     if (!parsed) {
-      parseError(key, *v, std::string("not a boolean (") + kBoolSpellings + ")");
+      return parseError(key, *v, std::string("not a boolean (") + kBoolSpellings + ")");
     }
     value = *parsed;
     record(key, v->value, false);
@@ -189,6 +188,7 @@ void SectionReader::fail(const std::string& key, const std::string& rule) const 
 }
 
 void SectionReader::finish() const {
+  std::vector<std::string> errors = errors_;
   for (const auto& key : doc_.keys(section_)) {
     bool known = false;
     for (const auto& k : known_keys_) {
@@ -203,7 +203,10 @@ void SectionReader::finish() const {
     if (!near.empty()) {
       msg += " (did you mean '" + near + "'?)";
     }
-    throw ConfigError(msg);
+    errors.push_back(msg);
+  }
+  if (!errors.empty()) {
+    throw ConfigError(joinLines(errors));
   }
 }
 

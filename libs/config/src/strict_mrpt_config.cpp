@@ -158,6 +158,31 @@ std::string displayDefault(const std::string& default_str, Expected type) {
 
 }  // namespace
 
+bool isMrptAppKey(const std::string& key) {
+  // Read by MRPT's icp-slam application itself (where the rawlog is, what to
+  // show and log), or by older MRPT versions (onlyClosestCorrespondences,
+  // likelihoodMapSelection), never by MRPT 2.5.8's option loaders: found in
+  // the shipped /usr/share/mrpt/config_files/icp-slam/*.ini.
+  static const char* const kKeys[] = {"rawlog_file",
+                                      "rawlog_offset",
+                                      "logOutput_dir",
+                                      "LOG_FREQUENCY",
+                                      "SAVE_POSE_LOG",
+                                      "SAVE_3D_SCENE",
+                                      "CAMERA_3DSCENE_FOLLOWS_ROBOT",
+                                      "SHOW_PROGRESS_3D_REAL_TIME",
+                                      "SHOW_PROGRESS_3D_REAL_TIME_DELAY_MS",
+                                      "SHOW_LASER_SCANS_3D",
+                                      "onlyClosestCorrespondences",
+                                      "likelihoodMapSelection"};
+  for (const char* k : kKeys) {
+    if (key == k) {
+      return true;
+    }
+  }
+  return false;
+}
+
 StrictMrptConfig::StrictMrptConfig(const IniDocument& doc, std::vector<std::string> owned,
                                    EffectiveConfig* effective)
     : doc_(doc), owned_(std::move(owned)), effective_(effective) {}
@@ -217,30 +242,38 @@ std::string StrictMrptConfig::readString(const std::string& section, const std::
   return to_mrpt;
 }
 
-void StrictMrptConfig::checkAllRead() const {
-  if (!type_errors_.empty()) {
-    throw ConfigError(type_errors_.front());
-  }
+std::vector<std::string> StrictMrptConfig::checkAllRead() const {
+  std::vector<std::string> errors = type_errors_;
+  std::vector<std::string> app_keys;
   for (const auto& section : doc_.sectionNames()) {
     const auto keys = doc_.keys(section);
     if (!owns(section) || keys.empty()) {
       continue;
     }
     const auto read = read_keys_.find(section);
-    if (read == read_keys_.end()) {
-      throw ConfigError(doc_.location(section, keys.front()) + ": [" + section +
-                        "]: section not read by any MRPT loader");
-    }
     for (const auto& key : keys) {
-      if (read->second.count(key) != 0) {
+      if (read != read_keys_.end() && read->second.count(key) != 0) {
         continue;
+      }
+      if (isMrptAppKey(key)) {
+        app_keys.push_back("[" + section + "] " + key);
+        continue;
+      }
+      if (read == read_keys_.end()) {
+        errors.push_back(doc_.location(section, key) + ": [" + section +
+                         "]: section not read by any MRPT loader");
+        break;
       }
       std::string msg =
           doc_.location(section, key) + ": [" + section + "] unknown key '" + key + "'";
       const std::string hint = suggestKey(section, key);
-      throw ConfigError(hint.empty() ? msg : msg + " (did you mean " + hint + "?)");
+      errors.push_back(hint.empty() ? msg : msg + " (did you mean " + hint + "?)");
     }
   }
+  if (!errors.empty()) {
+    throw ConfigError(joinLines(errors));
+  }
+  return app_keys;
 }
 
 void StrictMrptConfig::throwLoaderError(const std::exception& e) const {

@@ -5,15 +5,11 @@
 #include <cmath>
 #include <limits>
 
-#include "cell_grid.h"
+#include "pmap/em/cell_grid.h"
 #include "pmap/em/min_area_rectangle.h"
 
 namespace pmap::em {
 namespace {
-
-using detail::CellGrid;
-using detail::gridOf;
-using detail::partition;
 
 // `ids` in rect's in-plane frame (axis_u, axisV) about its centre.
 std::vector<Eigen::Vector2d> inPlane(const std::vector<Eigen::Vector3d>& points,
@@ -28,52 +24,80 @@ std::vector<Eigen::Vector2d> inPlane(const std::vector<Eigen::Vector3d>& points,
   return uv;
 }
 
-// Occupied-cell bounding boxes of the cells before / after each cut along one
-// axis of the grid ("lines" are columns for cuts along u, rows for cuts along
-// v). Returns for every cut position k (1..lines-1) the empty area in cells of
-// the part below and above k, and the total empty area of the whole.
+// The occupied lines of the grid along one axis ("lines" are columns for
+// cuts along u, rows for cuts along v), ascending, with each line's occupied
+// cells: their count and extent across. Only occupied lines are stored: a
+// cut between two of them splits the members the same wherever it lies.
+struct OccupiedLines {
+  std::vector<std::int64_t> line;  ///< line numbers, ascending
+  std::vector<std::int64_t> count, lo, hi;
+  std::vector<std::int32_t> of_cell;  ///< per occupied cell: its index in `line`
+};
+
+OccupiedLines occupiedLines(const CellGrid& g, bool along_u) {
+  OccupiedLines out;
+  for (const GridCell& c : g.cells) {
+    out.line.push_back(along_u ? c.col : c.row);
+  }
+  std::sort(out.line.begin(), out.line.end());
+  out.line.erase(std::unique(out.line.begin(), out.line.end()), out.line.end());
+  const std::size_t m = out.line.size();
+  out.count.assign(m, 0);
+  out.lo.assign(m, std::numeric_limits<std::int64_t>::max());
+  out.hi.assign(m, std::numeric_limits<std::int64_t>::min());
+  for (const GridCell& c : g.cells) {
+    const auto l = static_cast<std::size_t>(
+        std::lower_bound(out.line.begin(), out.line.end(), along_u ? c.col : c.row) -
+        out.line.begin());
+    const std::int64_t across = along_u ? c.row : c.col;
+    out.of_cell.push_back(static_cast<std::int32_t>(l));
+    ++out.count[l];
+    out.lo[l] = std::min(out.lo[l], across);
+    out.hi[l] = std::max(out.hi[l], across);
+  }
+  return out;
+}
+
+// Empty area (in cells) of the parts before / after each cut: the bounding
+// box of a part's occupied cells minus those cells. Index t (0..m) is the cut
+// with the first t occupied lines below it.
 struct CutAreas {
   std::vector<double> empty_low, empty_high;
   double empty_whole = 0;
 };
 
-CutAreas cutAreas(const std::vector<int>& line_of_cell, const std::vector<int>& across_of_cell,
-                  const std::vector<char>& occupied, int lines) {
-  // Per line: occupied count and the occupied extent across.
-  std::vector<int> count(static_cast<std::size_t>(lines), 0);
-  std::vector<int> lo(static_cast<std::size_t>(lines), INT32_MAX);
-  std::vector<int> hi(static_cast<std::size_t>(lines), INT32_MIN);
-  for (std::size_t c = 0; c < occupied.size(); ++c) {
-    if (occupied[c]) {
-      const auto l = static_cast<std::size_t>(line_of_cell[c]);
-      ++count[l];
-      lo[l] = std::min(lo[l], across_of_cell[c]);
-      hi[l] = std::max(hi[l], across_of_cell[c]);
-    }
+// Running bounding box of occupied lines, added one at a time.
+struct LineBox {
+  std::int64_t first = 0, last = 0, amin = 0, amax = 0, n = 0;
+  bool any = false;
+  void add(const OccupiedLines& o, std::size_t l) {
+    first = any ? std::min(first, o.line[l]) : o.line[l];
+    last = any ? std::max(last, o.line[l]) : o.line[l];
+    amin = any ? std::min(amin, o.lo[l]) : o.lo[l];
+    amax = any ? std::max(amax, o.hi[l]) : o.hi[l];
+    n += o.count[l];
+    any = true;
   }
-  // Empty area of lines [a, b): bbox of occupied cells minus occupied cells.
-  auto empty = [&](int a, int b) {
-    int first = -1, last = -1, amin = INT32_MAX, amax = INT32_MIN, n = 0;
-    for (int l = a; l < b; ++l) {
-      if (count[static_cast<std::size_t>(l)] == 0)
-        continue;
-      if (first < 0)
-        first = l;
-      last = l;
-      amin = std::min(amin, lo[static_cast<std::size_t>(l)]);
-      amax = std::max(amax, hi[static_cast<std::size_t>(l)]);
-      n += count[static_cast<std::size_t>(l)];
-    }
-    return first < 0 ? 0.0 : static_cast<double>((last - first + 1) * (amax - amin + 1) - n);
-  };
+  double empty() const {
+    return any ? static_cast<double>(last - first + 1) * static_cast<double>(amax - amin + 1) -
+                     static_cast<double>(n)
+               : 0.0;
+  }
+};
+
+CutAreas cutAreas(const OccupiedLines& o) {
+  const std::size_t m = o.line.size();
   CutAreas out;
-  out.empty_whole = empty(0, lines);
-  out.empty_low.assign(static_cast<std::size_t>(lines), 0.0);
-  out.empty_high.assign(static_cast<std::size_t>(lines), 0.0);
-  for (int k = 1; k < lines; ++k) {
-    out.empty_low[static_cast<std::size_t>(k)] = empty(0, k);
-    out.empty_high[static_cast<std::size_t>(k)] = empty(k, lines);
+  out.empty_low.assign(m + 1, 0.0);
+  out.empty_high.assign(m + 1, 0.0);
+  LineBox low, high;
+  for (std::size_t t = 0; t < m; ++t) {
+    low.add(o, t);
+    out.empty_low[t + 1] = low.empty();
+    high.add(o, m - 1 - t);
+    out.empty_high[m - 1 - t] = high.empty();
   }
+  out.empty_whole = low.empty();
   return out;
 }
 
@@ -82,17 +106,17 @@ CutAreas cutAreas(const std::vector<int>& line_of_cell, const std::vector<int>& 
 // minimum-area rectangle), in cells; 0 for parts aligned with the grid. A
 // rectangle fitted around an L (a ceiling continued around a corner) is turned
 // by the appendage, so in its frame neither leg looks rectangular, while
-// each leg refitted alone is. Prefix (suffix) hulls grow one line at a time:
-// each step merges two small hulls.
+// each leg refitted alone is. Prefix (suffix) hulls grow one occupied line at
+// a time: each step merges two small hulls.
 struct RefitSavings {
-  std::vector<double> low, high;  ///< per cut position k, as CutAreas
+  std::vector<double> low, high;  ///< per cut index t, as CutAreas
   double whole = 0;
 };
 
 RefitSavings refitSavings(const std::vector<Eigen::Vector2d>& uv,
-                          const std::vector<int>& line_of_member, int lines, double cell_area) {
-  const auto n_lines = static_cast<std::size_t>(lines);
-  std::vector<std::vector<Eigen::Vector2d>> line_hull(n_lines);
+                          const std::vector<std::int32_t>& line_of_member, std::size_t lines,
+                          double cell_area) {
+  std::vector<std::vector<Eigen::Vector2d>> line_hull(lines);
   for (std::size_t m = 0; m < uv.size(); ++m) {
     line_hull[static_cast<std::size_t>(line_of_member[m])].push_back(uv[m]);
   }
@@ -112,17 +136,17 @@ RefitSavings refitSavings(const std::vector<Eigen::Vector2d>& uv,
     return std::max(0.0, box - minAreaRectangle(hull).area()) / cell_area;
   };
   RefitSavings out;
-  out.low.assign(n_lines + 1, 0.0);
-  out.high.assign(n_lines + 1, 0.0);
+  out.low.assign(lines + 1, 0.0);
+  out.high.assign(lines + 1, 0.0);
   std::vector<Eigen::Vector2d> hull;
-  for (std::size_t l = 0; l < n_lines; ++l) {  // lines [0, l]: the part before l + 1
+  for (std::size_t l = 0; l < lines; ++l) {  // lines [0, l]: the part before l + 1
     hull.insert(hull.end(), line_hull[l].begin(), line_hull[l].end());
     hull = convexHull(std::move(hull));
     out.low[l + 1] = saving(hull);
   }
-  out.whole = out.low[n_lines];
+  out.whole = out.low[lines];
   hull.clear();
-  for (std::size_t l = n_lines; l-- > 0;) {  // lines [l, end): the part from l
+  for (std::size_t l = lines; l-- > 0;) {  // lines [l, end): the part from l
     hull.insert(hull.end(), line_hull[l].begin(), line_hull[l].end());
     hull = convexHull(std::move(hull));
     out.high[l] = saving(hull);
@@ -163,7 +187,7 @@ std::optional<Rectangle> frameAlong(const std::vector<Eigen::Vector3d>& points,
 // One way to cut along the grid's lines: before line k, keeping `keep`.
 struct CutCandidate {
   bool along_u = true;
-  int k = 0;
+  std::int64_t k = 0;
   CutKeep keep = CutKeep::kBoth;
   double gain = 0;
   std::size_t larger = 0;  ///< members of the larger side
@@ -171,44 +195,43 @@ struct CutCandidate {
 
 // Every cut along one axis of the grid that gains, with its estimated gain:
 // keeping both parts saves empty area at the price of kappa; keeping one
-// saves more at the price of the dropped members' loss.
-void cutsAlong(bool along_u, const CellGrid& g, const std::vector<char>& occupied,
-               const std::vector<Eigen::Vector2d>& uv, const std::vector<double>& member_loss,
-               double cell_area, double empty_area_cost, double kappa, std::size_t min_part,
-               bool allow_trims, std::vector<CutCandidate>& out) {
-  const int lines = along_u ? g.cols : g.rows;
-  const std::size_t cells = occupied.size();
-  std::vector<int> line_of(cells), across_of(cells);
-  for (std::size_t c = 0; c < cells; ++c) {
-    const int r = static_cast<int>(c) / g.cols;
-    const int k = static_cast<int>(c) % g.cols;
-    line_of[c] = along_u ? k : r;
-    across_of[c] = along_u ? r : k;
-  }
-  std::vector<int> line_of_member(uv.size());
-  // Members and loss per line, then prefix sums.
-  std::vector<double> loss_prefix(static_cast<std::size_t>(lines) + 1, 0.0);
-  std::vector<std::size_t> count_prefix(static_cast<std::size_t>(lines) + 1, 0);
-  for (std::size_t m = 0; m < uv.size(); ++m) {
-    line_of_member[m] = line_of[static_cast<std::size_t>(g.cell_of[m])];
-    const auto l = static_cast<std::size_t>(line_of_member[m]);
-    loss_prefix[l + 1] += member_loss[m];
+// saves more at the price of the dropped members' loss. Cut positions k
+// (1..lines-1) with the same occupied lines below are one cut; it is listed
+// once, at its smallest k.
+void cutsAlong(bool along_u, const CellGrid& g, const std::vector<Eigen::Vector2d>& uv,
+               const std::vector<double>& member_loss, double cell_area, double empty_area_cost,
+               double kappa, std::size_t min_part, bool allow_trims,
+               std::vector<CutCandidate>& out) {
+  const std::int64_t lines = along_u ? g.cols : g.rows;
+  const OccupiedLines o = occupiedLines(g, along_u);
+  const std::size_t m = o.line.size();
+  std::vector<std::int32_t> line_of_member(uv.size());
+  // Members and loss per occupied line, then prefix sums.
+  std::vector<double> loss_prefix(m + 1, 0.0);
+  std::vector<std::size_t> count_prefix(m + 1, 0);
+  for (std::size_t k = 0; k < uv.size(); ++k) {
+    line_of_member[k] = o.of_cell[static_cast<std::size_t>(g.cell_of[k])];
+    const auto l = static_cast<std::size_t>(line_of_member[k]);
+    loss_prefix[l + 1] += member_loss[k];
     ++count_prefix[l + 1];
   }
-  for (std::size_t l = 0; l < static_cast<std::size_t>(lines); ++l) {
+  for (std::size_t l = 0; l < m; ++l) {
     loss_prefix[l + 1] += loss_prefix[l];
     count_prefix[l + 1] += count_prefix[l];
   }
-  const CutAreas areas = cutAreas(line_of, across_of, occupied, lines);
-  const RefitSavings refit = refitSavings(uv, line_of_member, lines, cell_area);
+  const CutAreas areas = cutAreas(o);
+  const RefitSavings refit = refitSavings(uv, line_of_member, m, cell_area);
   const double whole = std::max(0.0, areas.empty_whole - refit.whole);
   const double loss_all = loss_prefix.back();
-  for (int k = 1; k < lines; ++k) {
-    const auto ku = static_cast<std::size_t>(k);
-    const std::size_t n_low = count_prefix[ku];
+  for (std::size_t t = 0; t <= m; ++t) {
+    const std::int64_t k = t == 0 ? 1 : o.line[t - 1] + 1;
+    if (k > lines - 1 || (t < m && k > o.line[t])) {
+      continue;
+    }
+    const std::size_t n_low = count_prefix[t];
     const std::size_t n_high = uv.size() - n_low;
-    const double lo = std::max(0.0, areas.empty_low[ku] - refit.low[ku]);
-    const double hi = std::max(0.0, areas.empty_high[ku] - refit.high[ku]);
+    const double lo = std::max(0.0, areas.empty_low[t] - refit.low[t]);
+    const double hi = std::max(0.0, areas.empty_high[t] - refit.high[t]);
     const std::size_t larger = std::max(n_low, n_high);
     auto add = [&](CutKeep keep, double gain, bool ok) {
       if (ok && gain > 0.0) {
@@ -217,9 +240,9 @@ void cutsAlong(bool along_u, const CellGrid& g, const std::vector<char>& occupie
     };
     add(CutKeep::kBoth, empty_area_cost * (whole - lo - hi) * cell_area - kappa,
         n_low >= min_part && n_high >= min_part);
-    add(CutKeep::kPartA, empty_area_cost * (whole - lo) * cell_area - (loss_all - loss_prefix[ku]),
+    add(CutKeep::kPartA, empty_area_cost * (whole - lo) * cell_area - (loss_all - loss_prefix[t]),
         allow_trims && n_low >= min_part);
-    add(CutKeep::kPartB, empty_area_cost * (whole - hi) * cell_area - loss_prefix[ku],
+    add(CutKeep::kPartB, empty_area_cost * (whole - hi) * cell_area - loss_prefix[t],
         allow_trims && n_high >= min_part);
   }
 }
@@ -235,17 +258,12 @@ std::optional<CoverageCut> coverageCutInFrame(const std::vector<Eigen::Vector3d>
                                               double empty_area_cost, double kappa,
                                               std::size_t min_part, bool allow_trims) {
   const CellGrid g = gridOf(points, members, rect, cell_m);
-  std::vector<char> occupied(static_cast<std::size_t>(g.rows) * static_cast<std::size_t>(g.cols),
-                             0);
-  for (const int c : g.cell_of) {
-    occupied[static_cast<std::size_t>(c)] = 1;
-  }
   const std::vector<Eigen::Vector2d> uv = inPlane(points, members, rect);
   const double cell_area = cell_m * cell_m;
   std::vector<CutCandidate> cands;
   for (const bool along_u : {true, false}) {
-    cutsAlong(along_u, g, occupied, uv, member_loss, cell_area, empty_area_cost, kappa, min_part,
-              allow_trims, cands);
+    cutsAlong(along_u, g, uv, member_loss, cell_area, empty_area_cost, kappa, min_part, allow_trims,
+              cands);
   }
   if (cands.empty()) {
     return std::nullopt;
@@ -265,9 +283,9 @@ std::optional<CoverageCut> coverageCutInFrame(const std::vector<Eigen::Vector3d>
   CoverageCut cut;
   cut.keep = pick->keep;
   cut.estimated_gain = pick->gain;
-  std::vector<char> in_a(occupied.size(), 0);
-  for (std::size_t c = 0; c < occupied.size(); ++c) {
-    const int line = pick->along_u ? static_cast<int>(c) % g.cols : static_cast<int>(c) / g.cols;
+  std::vector<char> in_a(g.cells.size(), 0);
+  for (std::size_t c = 0; c < g.cells.size(); ++c) {
+    const std::int64_t line = pick->along_u ? g.cells[c].col : g.cells[c].row;
     in_a[c] = line < pick->k ? 1 : 0;
   }
   cut.parts = partition(members, g.cell_of, in_a);

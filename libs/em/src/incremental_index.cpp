@@ -4,15 +4,15 @@
 #include <cmath>
 #include <limits>
 
+#include "pmap/em/cell_key.h"
+
 namespace pmap::em {
 
-std::int64_t IncrementalIndex::key(int x, int y, int z) const {
-  constexpr std::int64_t kMask = (1 << 21) - 1;
-  return ((static_cast<std::int64_t>(x) & kMask) << 42) |
-         ((static_cast<std::int64_t>(y) & kMask) << 21) | (static_cast<std::int64_t>(z) & kMask);
-}
-
 void IncrementalIndex::remove(std::int32_t j) {
+  const auto g = std::lower_bound(global_.begin(), global_.end(), j);
+  if (g != global_.end() && *g == j) {
+    global_.erase(g);
+  }
   const auto it = keys_of_.find(j);
   if (it == keys_of_.end()) {
     return;
@@ -24,6 +24,7 @@ void IncrementalIndex::remove(std::int32_t j) {
       cells_.erase(k);
     }
   }
+  entries_ -= it->second.size();
   keys_of_.erase(it);
 }
 
@@ -35,27 +36,44 @@ void IncrementalIndex::update(std::int32_t j, const Rectangle& rect) {
     lo = lo.cwiseMin(c);
     hi = hi.cwiseMax(c);
   }
-  const Eigen::Vector3i a = ((lo.array() - inflate_) / cell_).floor().cast<int>();
-  const Eigen::Vector3i b = ((hi.array() + inflate_) / cell_).floor().cast<int>();
+  const Cell a = cellOf(lo - Eigen::Vector3d::Constant(inflate_));
+  const Cell b = cellOf(hi + Eigen::Vector3d::Constant(inflate_));
+  const double span = static_cast<double>(b.x() - a.x() + 1) *
+                      static_cast<double>(b.y() - a.y() + 1) *
+                      static_cast<double>(b.z() - a.z() + 1);
+  if (!(span <= static_cast<double>(max_cells_)) ||
+      static_cast<double>(entries_) + span > static_cast<double>(max_total_cells_)) {
+    global_.insert(std::upper_bound(global_.begin(), global_.end(), j), j);
+    return;
+  }
   auto& keys = keys_of_[j];
-  for (int x = a.x(); x <= b.x(); ++x) {
-    for (int y = a.y(); y <= b.y(); ++y) {
-      for (int z = a.z(); z <= b.z(); ++z) {
-        const std::int64_t k = key(x, y, z);
+  for (std::int64_t x = a.x(); x <= b.x(); ++x) {
+    for (std::int64_t y = a.y(); y <= b.y(); ++y) {
+      for (std::int64_t z = a.z(); z <= b.z(); ++z) {
+        const std::int64_t k = cellKey(x, y, z);
         auto& list = cells_[k];
-        list.insert(std::upper_bound(list.begin(), list.end(), j), j);
+        const auto at = std::lower_bound(list.begin(), list.end(), j);
+        if (at != list.end() && *at == j) {
+          continue;  // far cells may share a key
+        }
+        list.insert(at, j);
         keys.push_back(k);
       }
     }
   }
+  entries_ += keys.size();
 }
 
 void IncrementalIndex::candidates(const Eigen::Vector3d& p, std::vector<std::int32_t>& out) const {
   out.clear();
-  const Eigen::Vector3i c = (p / cell_).array().floor().cast<int>();
-  const auto it = cells_.find(key(c.x(), c.y(), c.z()));
+  const auto it = cells_.find(cellKeyOf(p, cell_));
   if (it != cells_.end()) {
     out = it->second;
+  }
+  if (!global_.empty()) {
+    const auto middle = static_cast<std::ptrdiff_t>(out.size());
+    out.insert(out.end(), global_.begin(), global_.end());
+    std::inplace_merge(out.begin(), out.begin() + middle, out.end());
   }
 }
 

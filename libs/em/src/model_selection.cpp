@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_set>
+#include <utility>
+
+#include "pmap/em/cell_key.h"
 
 namespace pmap::em {
 
@@ -12,28 +14,32 @@ double emptyArea(const std::vector<Eigen::Vector3d>& points,
     return 0.0;
   }
   const Eigen::Vector3d v = rect.axisV();
-  // A dense occupancy grid over the rectangle (a hash set only for huge ones);
-  // members beyond the boundary count in the border cells.
-  const auto cols = static_cast<std::int64_t>(std::ceil(2.0 * rect.half_u / cell_m)) + 1;
-  const auto rows = static_cast<std::int64_t>(std::ceil(2.0 * rect.half_v / cell_m)) + 1;
-  const bool use_dense = cols * rows <= 4000000;
+  // A dense occupancy grid over the rectangle; for huge ones (a rectangle
+  // stretched by a stray point) the distinct cells of the members, so memory
+  // follows the members, not the extent. Members beyond the boundary count
+  // in the border cells.
+  const std::int64_t cols = ceilCells(2.0 * rect.half_u / cell_m) + 1;
+  const std::int64_t rows = ceilCells(2.0 * rect.half_v / cell_m) + 1;
+  const bool use_dense = static_cast<double>(cols) * static_cast<double>(rows) <= 4000000.0;
   std::vector<char> dense(use_dense ? static_cast<std::size_t>(cols * rows) : 0, 0);
-  std::unordered_set<std::int64_t> sparse;
+  std::vector<std::pair<std::int64_t, std::int64_t>> sparse;
   std::size_t covered_cells = 0;
   for (const std::int32_t i : members) {
     const Eigen::Vector3d d = points[static_cast<std::size_t>(i)] - rect.centre;
-    const auto a = std::clamp<std::int64_t>(
-        static_cast<std::int64_t>(std::floor((rect.axis_u.dot(d) + rect.half_u) / cell_m)), 0,
-        cols - 1);
-    const auto b = std::clamp<std::int64_t>(
-        static_cast<std::int64_t>(std::floor((v.dot(d) + rect.half_v) / cell_m)), 0, rows - 1);
+    const std::int64_t a = clampedCell((rect.axis_u.dot(d) + rect.half_u) / cell_m, cols);
+    const std::int64_t b = clampedCell((v.dot(d) + rect.half_v) / cell_m, rows);
     if (use_dense) {
       char& c = dense[static_cast<std::size_t>(b * cols + a)];
       covered_cells += c == 0 ? 1 : 0;
       c = 1;
-    } else if (sparse.insert(b * cols + a).second) {
-      ++covered_cells;
+    } else {
+      sparse.emplace_back(b, a);
     }
+  }
+  if (!use_dense) {
+    std::sort(sparse.begin(), sparse.end());
+    covered_cells =
+        static_cast<std::size_t>(std::unique(sparse.begin(), sparse.end()) - sparse.begin());
   }
   const double covered = static_cast<double>(covered_cells) * cell_m * cell_m;
   return std::max(0.0, rect.area() - covered);

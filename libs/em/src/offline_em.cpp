@@ -107,6 +107,9 @@ EmResult OfflineEm::run(const std::vector<Eigen::Vector3d>& points, const Neighb
         resp, surfaces, emptyAreas(points, resp, surfaces, options_.split_cell_m), options_);
     result.history.push_back(rec);
     result.iterations = it + 1;
+    if (observer_) {
+      observer_(rec);
+    }
     const double change = std::abs(rec.log_posterior - previous);
     const bool small = change < options_.convergence_tolerance * std::abs(previous) ||
                        change < options_.convergence_absolute_nats;

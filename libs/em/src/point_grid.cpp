@@ -3,42 +3,34 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pmap/em/cell_key.h"
+
 namespace pmap::em {
 
 PointGrid::PointGrid(const std::vector<Eigen::Vector3d>& points, double cell_m)
     : points_(points), cell_(cell_m) {
   for (size_t i = 0; i < points.size(); ++i) {
-    const Eigen::Vector3i c = cellOf(points[i]);
-    cells_[key(c.x(), c.y(), c.z())].push_back(static_cast<std::int32_t>(i));
+    cells_[cellKeyOf(points[i], cell_)].push_back(static_cast<std::int32_t>(i));
   }
-}
-
-std::int64_t PointGrid::key(std::int64_t x, std::int64_t y, std::int64_t z) const {
-  // 21 bits per axis: +-1e6 cells, +-100 km at 0.1 m cells.
-  constexpr std::int64_t kMask = (1 << 21) - 1;
-  return ((x & kMask) << 42) | ((y & kMask) << 21) | (z & kMask);
-}
-
-Eigen::Vector3i PointGrid::cellOf(const Eigen::Vector3d& p) const {
-  return (p / cell_).array().floor().cast<int>();
 }
 
 std::vector<std::int32_t> PointGrid::inBox(const Eigen::Vector3d& lo,
                                            const Eigen::Vector3d& hi) const {
-  const Eigen::Vector3i a = cellOf(lo);
-  const Eigen::Vector3i b = cellOf(hi);
+  const Cell a = cellOf(lo);
+  const Cell b = cellOf(hi);
   std::vector<std::int32_t> out;
-  const double cells =
-      static_cast<double>(b.x() - a.x() + 1) * (b.y() - a.y() + 1) * (b.z() - a.z() + 1);
+  const double cells = static_cast<double>(b.x() - a.x() + 1) *
+                       static_cast<double>(b.y() - a.y() + 1) *
+                       static_cast<double>(b.z() - a.z() + 1);
   if (cells > 4.0 * static_cast<double>(cells_.size())) {  // huge box: scan the occupied cells
     for (const auto& [k, v] : cells_) {
       out.insert(out.end(), v.begin(), v.end());
     }
   } else {
-    for (int x = a.x(); x <= b.x(); ++x) {
-      for (int y = a.y(); y <= b.y(); ++y) {
-        for (int z = a.z(); z <= b.z(); ++z) {
-          const auto it = cells_.find(key(x, y, z));
+    for (std::int64_t x = a.x(); x <= b.x(); ++x) {
+      for (std::int64_t y = a.y(); y <= b.y(); ++y) {
+        for (std::int64_t z = a.z(); z <= b.z(); ++z) {
+          const auto it = cells_.find(cellKey(x, y, z));
           if (it != cells_.end()) {
             out.insert(out.end(), it->second.begin(), it->second.end());
           }
@@ -47,6 +39,8 @@ std::vector<std::int32_t> PointGrid::inBox(const Eigen::Vector3d& lo,
     }
   }
   std::sort(out.begin(), out.end());
+  // Far cells hashed to one key (cell_key.h) would list their points twice.
+  out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
 

@@ -2,12 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <tuple>
+
+#include "pmap/em/cell_key.h"
 
 namespace pmap::em {
 
 RectangleIndex::RectangleIndex(const std::vector<Surface>& surfaces, double inflate_m,
-                               double cell_m, std::size_t max_cells)
+                               double cell_m, std::size_t max_cells, std::size_t max_total_cells)
     : cell_(cell_m) {
+  // Each bounded rectangle's inflated bounding box in cells; the smallest
+  // are indexed first, so a budget overrun sends the largest to global_.
+  std::vector<std::tuple<double, std::int32_t, Cell, Cell>> boxes;  // cells, surface, a, b
   for (size_t j = 0; j < surfaces.size(); ++j) {
     const Rectangle& r = surfaces[j].rect;
     const auto idx = static_cast<std::int32_t>(j);
@@ -21,32 +28,46 @@ RectangleIndex::RectangleIndex(const std::vector<Surface>& surfaces, double infl
       lo = lo.cwiseMin(c);
       hi = hi.cwiseMax(c);
     }
-    const Eigen::Vector3i a = cellOf(lo - Eigen::Vector3d::Constant(inflate_m));
-    const Eigen::Vector3i b = cellOf(hi + Eigen::Vector3d::Constant(inflate_m));
-    const Eigen::Vector3d span = (b - a).cast<double>() + Eigen::Vector3d::Ones();
-    if (span.prod() > static_cast<double>(max_cells)) {
+    const Cell a = cellOf(lo - Eigen::Vector3d::Constant(inflate_m));
+    const Cell b = cellOf(hi + Eigen::Vector3d::Constant(inflate_m));
+    const double span = static_cast<double>(b.x() - a.x() + 1) *
+                        static_cast<double>(b.y() - a.y() + 1) *
+                        static_cast<double>(b.z() - a.z() + 1);
+    if (!(span <= static_cast<double>(max_cells))) {
       global_.push_back(idx);
       continue;
     }
-    for (int x = a.x(); x <= b.x(); ++x) {
-      for (int y = a.y(); y <= b.y(); ++y) {
-        for (int z = a.z(); z <= b.z(); ++z) {
-          cells_[key({x, y, z})].push_back(idx);
+    boxes.emplace_back(span, idx, a, b);
+  }
+  std::sort(boxes.begin(), boxes.end(), [](const auto& x, const auto& y) {
+    return std::get<0>(x) < std::get<0>(y) ||
+           (std::get<0>(x) == std::get<0>(y) && std::get<1>(x) < std::get<1>(y));
+  });
+  std::vector<std::tuple<std::int32_t, Cell, Cell>> indexed;
+  for (const auto& [span, idx, a, b] : boxes) {
+    if (static_cast<double>(entries_) + span > static_cast<double>(max_total_cells)) {
+      global_.push_back(idx);
+      continue;
+    }
+    entries_ += static_cast<std::size_t>(span);
+    indexed.emplace_back(idx, a, b);
+  }
+  std::sort(global_.begin(), global_.end());
+  // Surfaces in index order: each cell's list ascending.
+  std::sort(indexed.begin(), indexed.end(),
+            [](const auto& x, const auto& y) { return std::get<0>(x) < std::get<0>(y); });
+  for (const auto& [idx, a, b] : indexed) {
+    for (std::int64_t x = a.x(); x <= b.x(); ++x) {
+      for (std::int64_t y = a.y(); y <= b.y(); ++y) {
+        for (std::int64_t z = a.z(); z <= b.z(); ++z) {
+          auto& list = cells_[cellKey(x, y, z)];
+          if (list.empty() || list.back() != idx) {  // far cells may share a key
+            list.push_back(idx);
+          }
         }
       }
     }
   }
-}
-
-std::int64_t RectangleIndex::key(const Eigen::Vector3i& c) const {
-  constexpr std::int64_t kMask = (1 << 21) - 1;
-  return ((static_cast<std::int64_t>(c.x()) & kMask) << 42) |
-         ((static_cast<std::int64_t>(c.y()) & kMask) << 21) |
-         (static_cast<std::int64_t>(c.z()) & kMask);
-}
-
-Eigen::Vector3i RectangleIndex::cellOf(const Eigen::Vector3d& p) const {
-  return (p / cell_).array().floor().cast<int>();
 }
 
 const std::vector<std::int32_t>* RectangleIndex::candidatesRef(
@@ -55,13 +76,13 @@ const std::vector<std::int32_t>* RectangleIndex::candidatesRef(
     candidates(p, scratch);
     return &scratch;
   }
-  const auto it = cells_.find(key(cellOf(p)));
+  const auto it = cells_.find(cellKeyOf(p, cell_));
   return it == cells_.end() ? nullptr : &it->second;
 }
 
 void RectangleIndex::candidates(const Eigen::Vector3d& p, std::vector<std::int32_t>& out) const {
   out.clear();
-  const auto it = cells_.find(key(cellOf(p)));
+  const auto it = cells_.find(cellKeyOf(p, cell_));
   if (it != cells_.end()) {
     out = it->second;
   }

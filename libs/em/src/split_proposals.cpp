@@ -5,40 +5,35 @@
 #include <limits>
 #include <map>
 
-#include "cell_grid.h"
+#include "pmap/em/cell_grid.h"
 
 namespace pmap::em {
 namespace {
 
-using detail::CellGrid;
-using detail::gridOf;
-using detail::partition;
-
-// 4-connected components of flagged cells with the same sign; returns the
-// component id per cell (-1 unflagged) and the number of components.
+// 4-connected components of flagged occupied cells with the same sign;
+// returns the component id per occupied cell (-1 unflagged) and the number of
+// components. Ids follow the row-major order of each component's first cell.
 int components(const CellGrid& g, const std::vector<int>& sign, std::vector<int>& comp) {
   comp.assign(sign.size(), -1);
   int count = 0;
-  std::vector<int> stack;
-  for (int start = 0; start < static_cast<int>(sign.size()); ++start) {
+  std::vector<std::int32_t> stack;
+  for (std::size_t start = 0; start < sign.size(); ++start) {
     if (sign[start] == 0 || comp[start] >= 0) {
       continue;
     }
     comp[start] = count;
-    stack = {start};
+    stack = {static_cast<std::int32_t>(start)};
     while (!stack.empty()) {
-      const int c = stack.back();
+      const auto c = static_cast<std::size_t>(stack.back());
       stack.pop_back();
-      const int r = c / g.cols;
-      const int k = c % g.cols;
-      const int nbr[4][2] = {{r - 1, k}, {r + 1, k}, {r, k - 1}, {r, k + 1}};
-      for (const auto& n : nbr) {
-        if (n[0] < 0 || n[0] >= g.rows || n[1] < 0 || n[1] >= g.cols) {
-          continue;
-        }
-        const int m = n[0] * g.cols + n[1];
-        if (sign[m] == sign[c] && comp[m] < 0) {
-          comp[m] = count;
+      const GridCell& at = g.cells[c];
+      const GridCell nbr[4] = {
+          {at.row - 1, at.col}, {at.row + 1, at.col}, {at.row, at.col - 1}, {at.row, at.col + 1}};
+      for (const GridCell& n : nbr) {
+        const std::int32_t m = g.find(n.row, n.col);
+        if (m >= 0 && sign[static_cast<std::size_t>(m)] == sign[c] &&
+            comp[static_cast<std::size_t>(m)] < 0) {
+          comp[static_cast<std::size_t>(m)] = count;
           stack.push_back(m);
         }
       }
@@ -63,12 +58,13 @@ std::vector<SplitProposal> residualSplits(const std::vector<Eigen::Vector3d>& po
   const double density = static_cast<double>(members.size()) / std::max(rect.area(), 1e-9);
   cell_m = std::max(cell_m, std::sqrt(24.0 / density));
   const CellGrid g = gridOf(points, members, rect, cell_m);
-  const std::size_t cells = static_cast<std::size_t>(g.rows) * static_cast<std::size_t>(g.cols);
+  const std::size_t cells = g.cells.size();  // occupied cells only
   std::vector<double> sum(cells, 0.0);
   std::vector<int> count(cells, 0);
   for (std::size_t k = 0; k < members.size(); ++k) {
-    sum[g.cell_of[k]] += rect.planeDistance(points[static_cast<std::size_t>(members[k])]);
-    ++count[g.cell_of[k]];
+    const auto c = static_cast<std::size_t>(g.cell_of[k]);
+    sum[c] += rect.planeDistance(points[static_cast<std::size_t>(members[k])]);
+    ++count[c];
   }
   std::vector<int> sign(cells, 0);
   for (std::size_t c = 0; c < cells; ++c) {
@@ -94,8 +90,8 @@ std::vector<SplitProposal> residualSplits(const std::vector<Eigen::Vector3d>& po
   std::sort(by_size.begin(), by_size.end(), [](const auto& a, const auto& b) {
     return a.first > b.first || (a.first == b.first && a.second < b.second);
   });
+  std::vector<char> in_a(cells, 0);
   for (const auto& [size, k] : by_size) {
-    std::vector<char> in_a(cells, 0);
     for (std::size_t c = 0; c < cells; ++c) {
       in_a[c] = comp[c] == k ? 1 : 0;
     }

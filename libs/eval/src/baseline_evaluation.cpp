@@ -22,13 +22,14 @@ void addAccuracy(const MapAccuracy& a, json& out) {
 
 json octomapJson(const fs::path& dir, const GroundTruth& gt, const MapPoints& points,
                  const std::vector<Eigen::Vector3d>& samples, const Rigid2D& map_to_gt,
-                 const BaselineOptions& options) {
+                 const BaselineOptions& options, std::vector<BaselineFile>& files) {
   const ScanOrigins origins = readScanOrigins(dir / "scans.csv");
   json list = json::array();
   for (const double res : options.octomap_resolutions_m) {
     OctomapOptions o;
     o.resolution_m = res;
-    const OctomapResult r = buildOctomap(origins, points, o, dir / "points.ply");
+    OctomapResult r = buildOctomap(origins, points, o, dir / "points.ply");
+    files.push_back({octomapFileName(res), std::move(r.bt_file)});
     json e = {{"resolution_m", r.resolution_m},
               {"scans", r.scans},
               {"points", r.points},
@@ -38,7 +39,8 @@ json octomapJson(const fs::path& dir, const GroundTruth& gt, const MapPoints& po
               {"nodes", r.nodes},
               {"leaves", r.leaves},
               {"occupied_leaves", r.occupied_leaves},
-              {"occupied_voxels", r.occupied_centres.size()}};
+              {"occupied_voxels", r.occupied_centres.size()},
+              {"bt_file", files.back().name}};
     addAccuracy(pointAccuracy(r.occupied_centres, gt, samples, map_to_gt, options.accuracy), e);
     list.push_back(e);
   }
@@ -85,8 +87,9 @@ bool BaselineOptions::validate(std::string* why) const {
   return accuracy.validate(why);
 }
 
-void addBaselineKeys(const fs::path& dir, const GroundTruth& gt, const MapPoints& points,
-                     const Rigid2D& map_to_gt, const BaselineOptions& options, json& doc) {
+std::vector<BaselineFile> addBaselineKeys(const fs::path& dir, const GroundTruth& gt,
+                                          const MapPoints& points, const Rigid2D& map_to_gt,
+                                          const BaselineOptions& options, json& doc) {
   std::string why;
   if (!options.validate(&why)) {
     throw std::invalid_argument("BaselineOptions: " + why);
@@ -97,8 +100,9 @@ void addBaselineKeys(const fs::path& dir, const GroundTruth& gt, const MapPoints
                               {"sample_spacing_m", options.accuracy.sample_spacing_m},
                               {"mesh_sample_m", options.accuracy.mesh_sample_m},
                               {"max_distance_m", options.accuracy.index.max_distance_m}};
+  std::vector<BaselineFile> files;
   if (fs::exists(dir / "scans.csv")) {
-    doc["octomap"] = octomapJson(dir, gt, points, samples, map_to_gt, options);
+    doc["octomap"] = octomapJson(dir, gt, points, samples, map_to_gt, options, files);
   }
   if (fs::exists(dir / "raw.glb")) {
     doc["raw_map"] = meshJson(dir / "raw.glb", gt, samples, map_to_gt, options);
@@ -106,6 +110,7 @@ void addBaselineKeys(const fs::path& dir, const GroundTruth& gt, const MapPoints
   if (fs::exists(dir / "surfaces.csv") && fs::exists(dir / "map.glb")) {
     doc["planar_map"] = planarJson(dir, gt, samples, map_to_gt, options);
   }
+  return files;
 }
 
 std::string baselineReportText(const json& doc) {

@@ -1,5 +1,6 @@
 #include "pmap/eval/glb_mesh.h"
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -7,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pmap/common/error.h"
+#include "pmap/eval/map_files.h"
 
 namespace pmap::eval {
 namespace {
@@ -27,6 +29,7 @@ std::uint32_t u32(const std::vector<std::uint8_t>& b, std::size_t at) {
 class GlbFile {
  public:
   explicit GlbFile(const std::filesystem::path& path) : where_(path.string() + ": ") {
+    requireRegularFile(path);
     std::ifstream in(path, std::ios::binary);
     if (!in)
       fail("cannot open");
@@ -88,6 +91,10 @@ class GlbFile {
     for (std::size_t k = 0; k < v.count; ++k) {
       float f[3];
       std::memcpy(f, v.data + k * v.stride, sizeof f);
+      if (!std::isfinite(f[0]) || !std::isfinite(f[1]) || !std::isfinite(f[2])) {
+        fail("accessor " + std::to_string(index) + ": POSITION " + std::to_string(k) +
+             " is not finite");
+      }
       out[k] = Eigen::Vector3d(f[0], f[1], f[2]);
     }
     return out;

@@ -1,12 +1,15 @@
 #include "pmap/eval/ground_truth.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <nlohmann/json.hpp>
 
 #include "pmap/common/error.h"
+#include "pmap/eval/map_files.h"
 
 namespace pmap::eval {
 namespace {
@@ -23,24 +26,42 @@ class Fields {
     return j.at(key);
   }
   double number(const json& j, const std::string& key, const std::string& where) const {
-    const json& v = at(j, key, where);
+    return finite(at(j, key, where), where + "." + key);
+  }
+  /// A finite number (the parser already refuses nan, inf and overflow).
+  double finite(const json& v, const std::string& where) const {
     if (!v.is_number()) {
-      fail(where + "." + key + " is not a number");
+      fail(where + " is not a number");
     }
-    return v.get<double>();
+    const double d = v.get<double>();
+    if (!std::isfinite(d)) {
+      fail(where + " is not finite");
+    }
+    return d;
+  }
+  /// An integer in int range (ids, indices).
+  int integer(const json& v, const std::string& where) const {
+    const double d = finite(v, where);
+    if (d != std::floor(d) || d < std::numeric_limits<int>::min() ||
+        d > std::numeric_limits<int>::max()) {
+      fail(where + " is not an integer in int range");
+    }
+    return static_cast<int>(d);
+  }
+  int integer(const json& j, const std::string& key, const std::string& where) const {
+    return integer(at(j, key, where), where + "." + key);
   }
   Eigen::Vector3d vec3(const json& v, const std::string& where) const {
-    if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() ||
-        !v[2].is_number()) {
+    if (!v.is_array() || v.size() != 3) {
       fail(where + " is not an [x, y, z] array");
     }
-    return {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
+    return {finite(v[0], where + "[0]"), finite(v[1], where + "[1]"), finite(v[2], where + "[2]")};
   }
   Eigen::Vector2d vec2(const json& v, const std::string& where) const {
-    if (!v.is_array() || v.size() < 2 || !v[0].is_number() || !v[1].is_number()) {
+    if (!v.is_array() || v.size() < 2) {
       fail(where + " is not an [x, y] array");
     }
-    return {v[0].get<double>(), v[1].get<double>()};
+    return {finite(v[0], where + "[0]"), finite(v[1], where + "[1]")};
   }
   [[noreturn]] void fail(const std::string& what) const {
     throw InputError(file_ + ": ground truth: " + what);
@@ -50,16 +71,41 @@ class Fields {
   std::string file_;
 };
 
+/// nlohmann's DOM builder, remembering where the parser failed (its
+/// exceptions for a number overflow, "1e999", carry no position).
+class LocatingDomParser : public nlohmann::detail::json_sax_dom_parser<json> {
+ public:
+  explicit LocatingDomParser(json& result) : json_sax_dom_parser(result, false) {}
+  template <class Exception>
+  bool parse_error(std::size_t position, const std::string& token, const Exception& ex) {
+    position_ = position;
+    message_ = ex.what();
+    return json_sax_dom_parser::parse_error(position, token, ex);
+  }
+  std::size_t position() const { return position_; }
+  const std::string& message() const { return message_; }
+
+ private:
+  std::size_t position_ = 0;
+  std::string message_;
+};
+
 json parseFile(const std::filesystem::path& path) {
-  std::ifstream in(path);
+  requireRegularFile(path);
+  std::ifstream in(path, std::ios::binary);
   if (!in) {
     throw InputError(path.string() + ": cannot open ground truth file");
   }
-  try {
-    return json::parse(in);
-  } catch (const json::exception& e) {
-    throw InputError(path.string() + ": not valid JSON: " + e.what());
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  json doc;
+  LocatingDomParser parser(doc);
+  if (!json::sax_parse(text, &parser)) {
+    const std::size_t end = std::min(parser.position(), text.size());
+    const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(end), '\n');
+    throw InputError(path.string() + ":" + std::to_string(line) +
+                     ": not valid JSON: " + parser.message());
   }
+  return doc;
 }
 
 void readPoses(const json& doc, const Fields& f, GroundTruth& gt) {
@@ -69,17 +115,18 @@ void readPoses(const json& doc, const Fields& f, GroundTruth& gt) {
     if (!p.is_array() || p.size() != 7) {
       f.fail("poses[" + std::to_string(i) + "] is not [t, x, y, z, yaw, pitch, roll]");
     }
-    gt.poses.append(
-        p[0].get<double>(),
-        mrpt::math::TPose3D(p[1].get<double>(), p[2].get<double>(), p[3].get<double>(),
-                            p[4].get<double>(), p[5].get<double>(), p[6].get<double>()));
+    double v[7];
+    for (std::size_t k = 0; k < 7; ++k) {
+      v[k] = f.finite(p[k], "poses[" + std::to_string(i) + "][" + std::to_string(k) + "]");
+    }
+    gt.poses.append(v[0], mrpt::math::TPose3D(v[1], v[2], v[3], v[4], v[5], v[6]));
   }
 }
 
 void readSurfaces(const json& doc, const Fields& f, GroundTruth& gt) {
   for (const json& s : f.at(doc, "surfaces", "")) {
     GtRectangle r;
-    r.id = static_cast<int>(f.number(s, "id", "surfaces[]"));
+    r.id = f.integer(s, "id", "surfaces[]");
     const std::string where = "surfaces[id " + std::to_string(r.id) + "]";
     r.kind = f.at(s, "kind", where).get<std::string>();
     const json& c = f.at(s, "corners", where);
@@ -91,7 +138,7 @@ void readSurfaces(const json& doc, const Fields& f, GroundTruth& gt) {
     }
     r.normal = f.vec3(f.at(s, "normal", where), where + ".normal");
     if (s.contains("parent") && s["parent"].is_number()) {
-      r.parent = s["parent"].get<int>();
+      r.parent = f.integer(s["parent"], where + ".parent");
     }
     gt.surfaces.push_back(r);
   }
@@ -104,9 +151,9 @@ void readPosters(const json& doc, const Fields& f, const std::filesystem::path& 
   }
   for (const json& p : doc["posters"]) {
     GtPoster poster;
-    poster.id = static_cast<int>(f.number(p, "id", "posters[]"));
+    poster.id = f.integer(p, "id", "posters[]");
     const std::string where = "posters[id " + std::to_string(poster.id) + "]";
-    poster.wall_id = static_cast<int>(f.number(p, "wall_id", where));
+    poster.wall_id = f.integer(p, "wall_id", where);
     const json& c = f.at(p, "corners", where);
     if (!c.is_array() || c.size() != 4) {
       f.fail(where + ".corners must have 4 points");
@@ -125,7 +172,7 @@ void readClutter(const json& doc, const Fields& f, GroundTruth& gt) {
     return;
   }
   for (const json& c : doc["clutter"]) {
-    const int id = static_cast<int>(f.number(c, "id", "clutter[]"));
+    const int id = f.integer(c, "id", "clutter[]");
     const std::string where = "clutter[id " + std::to_string(id) + "]";
     const std::string shape = f.at(c, "shape", where).get<std::string>();
     const std::string kind = f.at(c, "kind", where).get<std::string>();
@@ -143,7 +190,7 @@ void readClutter(const json& doc, const Fields& f, GroundTruth& gt) {
       const Eigen::Vector2d centre = f.vec2(f.at(c, "centre", where), where + ".centre");
       const Eigen::Vector3d size = f.vec3(f.at(c, "size_m", where), where + ".size_m");
       b.centre = centre;
-      b.yaw = c.contains("yaw") ? c["yaw"].get<double>() : 0.0;
+      b.yaw = c.contains("yaw") ? f.finite(c["yaw"], where + ".yaw") : 0.0;
       b.min = Eigen::Vector3d(-size.x() / 2, -size.y() / 2, f.number(c, "z_min_m", where));
       b.max = Eigen::Vector3d(size.x() / 2, size.y() / 2, f.number(c, "z_max_m", where));
       gt.boxes.push_back(b);
@@ -153,10 +200,39 @@ void readClutter(const json& doc, const Fields& f, GroundTruth& gt) {
   }
 }
 
+/// Fast path for the many hit ids: a JSON integer in int range.
+bool intValue(const json& v, int& out) {
+  if (v.is_number_unsigned()) {
+    const auto u = v.get<std::uint64_t>();
+    out = static_cast<int>(u);
+    return u <= static_cast<std::uint64_t>(std::numeric_limits<int>::max());
+  }
+  if (v.is_number_integer()) {
+    const auto i = v.get<std::int64_t>();
+    out = static_cast<int>(i);
+    return i >= std::numeric_limits<int>::min() && i <= std::numeric_limits<int>::max();
+  }
+  return false;
+}
+
 void readHits(const json& doc, const Fields& f, GroundTruth& gt) {
   for (const json& s : f.at(doc, "structure_scans", "")) {
-    const auto index = static_cast<std::int64_t>(f.number(s, "index", "structure_scans[]"));
-    gt.hits[index] = f.at(s, "hits", "structure_scans[]").get<std::vector<int>>();
+    const int index = f.integer(s, "index", "structure_scans[]");
+    const std::string where = "structure_scans[index " + std::to_string(index) + "]";
+    const json& hits = f.at(s, "hits", where);
+    if (!hits.is_array()) {
+      f.fail(where + ".hits is not an array");
+    }
+    std::vector<int>& ids = gt.hits[index];
+    ids.clear();
+    ids.reserve(hits.size());
+    for (std::size_t k = 0; k < hits.size(); ++k) {
+      int id = 0;
+      if (!intValue(hits[k], id)) {  // the slow path builds the message
+        id = f.integer(hits[k], where + ".hits[" + std::to_string(k) + "]");
+      }
+      ids.push_back(id);
+    }
   }
 }
 

@@ -4,11 +4,13 @@
 
 #include <cstdio>
 #include <optional>
+#include <system_error>
 
 #include "pmap/common/error.h"
 #include "pmap/common/text.h"
 #include "pmap/config/command_line.h"
 #include "pmap/eval/baseline_evaluation.h"
+#include "pmap/eval/eval_outputs.h"
 #include "pmap/eval/ground_truth.h"
 #include "pmap/eval/label_check.h"
 #include "pmap/eval/map_files.h"
@@ -17,7 +19,6 @@
 #include "pmap/eval/surface_files.h"
 #include "pmap/eval/surface_report.h"
 #include "pmap/eval/texture_quality.h"
-#include "pmap/products/json_file.h"
 
 namespace pmap::eval {
 namespace fs = std::filesystem;
@@ -35,8 +36,10 @@ std::optional<MapEvalArgs> parseArgs(int argc, const char* const* argv) {
                                    cmd);
   TCLAP::ValueArg<std::string> gt("g", "gt", "ground truth (indoor-sim PREFIX.gt.json)", true, "",
                                   "FILE", cmd);
-  TCLAP::ValueArg<std::string> out("o", "out", "evaluation output", false, "eval.json", "eval.json",
-                                   cmd);
+  TCLAP::ValueArg<std::string> out("o", "out",
+                                   "evaluation output (default ./eval.json); the OctoMap baselines "
+                                   "octomap_5cm.bt and octomap_10cm.bt are written beside it",
+                                   false, "eval.json", "eval.json", cmd);
   TCLAP::ValueArg<double> shift("", "texture-max-shift-px",
                                 "registration search of the poster texture score, texels either "
                                 "way (default 2)",
@@ -94,17 +97,24 @@ void addSurfaceEvaluation(const MapEvalArgs& args, const GroundTruth& gt, const 
 
 /// The texture keys, when the map has a textures.csv and the world posters.
 void addTextureEvaluation(const MapEvalArgs& args, const GroundTruth& gt, const Rigid2D& map_to_gt,
-                          json& doc) {
+                          MapEvaluation& ev) {
   const fs::path csv = args.map_dir / "textures.csv";
   if (!fs::exists(csv) || gt.posters.empty()) {
     return;
   }
   TextureQualityOptions options;
   options.max_shift_px = args.texture_max_shift_px;
+  const std::vector<MapTexture> textures = readMapTextures(csv);
+  for (const MapTexture& t : textures) {
+    ev.images.push_back(args.map_dir / t.file);
+  }
+  for (const GtPoster& p : gt.posters) {
+    ev.images.push_back(p.image);
+  }
   json posters = json::array();
   double min_psnr = 0, sum = 0;
   std::size_t scored = 0;
-  for (const PosterScore& s : scorePosters(gt, readMapTextures(csv), map_to_gt, options)) {
+  for (const PosterScore& s : scorePosters(gt, textures, map_to_gt, options)) {
     json p = {{"poster", s.poster_id}, {"surface", s.surface_id}};
     if (s.surface_id >= 0) {
       p.update({{"psnr_db", s.psnr_db},
@@ -119,16 +129,50 @@ void addTextureEvaluation(const MapEvalArgs& args, const GroundTruth& gt, const 
     }
     posters.push_back(p);
   }
-  doc["texture"] = {{"posters", posters},
-                    {"posters_scored", scored},
-                    {"max_shift_px", options.max_shift_px},
-                    {"psnr_db_min", scored > 0 ? json(min_psnr) : json(nullptr)},
-                    {"psnr_db_mean", scored > 0 ? json(sum / scored) : json(nullptr)}};
+  ev.doc["texture"] = {{"posters", posters},
+                       {"posters_scored", scored},
+                       {"max_shift_px", options.max_shift_px},
+                       {"psnr_db_min", scored > 0 ? json(min_psnr) : json(nullptr)},
+                       {"psnr_db_mean", scored > 0 ? json(sum / scored) : json(nullptr)}};
+}
+
+/// The short report on stdout.
+void printReport(const json& doc) {
+  std::printf("pose_ate_m %.4f (first-pose aligned %.4f, %zu poses)\n",
+              doc["pose_ate_m"].get<double>(),
+              doc["pose"]["ate_first_pose_aligned_m"].get<double>(),
+              doc["pose"]["matched"].get<std::size_t>());
+  if (doc.contains("label_check")) {
+    std::printf("points on their labelled surface within 3 sigma: %.4f (median %.4f m)\n",
+                doc["label_check"]["fraction_within_3sigma"].get<double>(),
+                doc["label_check"]["median_m"].get<double>());
+  }
+  std::fputs(surfaceReportText(doc).c_str(), stdout);
+  std::fputs(baselineReportText(doc).c_str(), stdout);
+  for (const json& o : doc.value("octomap", json::array())) {
+    std::printf("octomap tree (octovis): %s\n", o["bt_file"].get<std::string>().c_str());
+  }
+  if (doc.contains("texture")) {
+    for (const json& p : doc["texture"]["posters"]) {
+      if (p.contains("psnr_db")) {
+        std::printf("poster %d on surface %d: PSNR %.2f dB (shift %.1f, %.1f px)\n",
+                    p["poster"].get<int>(), p["surface"].get<int>(), p["psnr_db"].get<double>(),
+                    p["shift_px"][0].get<double>(), p["shift_px"][1].get<double>());
+      } else {
+        std::printf("poster %d: not textured in the map\n", p["poster"].get<int>());
+      }
+    }
+  }
 }
 
 }  // namespace
 
-json evaluateMap(const MapEvalArgs& args) {
+MapEvaluation runEvaluation(const MapEvalArgs& args) {
+  std::error_code ec;
+  if (!fs::is_directory(args.map_dir, ec)) {
+    throw InputError(args.map_dir.string() +
+                     ": not a directory (--map takes a planar-mapper output directory)");
+  }
   const GroundTruth gt = readGroundTruth(args.gt);
   const poses::Trajectory estimated = readMapPoses(args.map_dir / "poses.txt");
   const PoseErrors pe = comparePoses(estimated, gt.poses);
@@ -136,7 +180,8 @@ json evaluateMap(const MapEvalArgs& args) {
     throw InputError((args.map_dir / "poses.txt").string() +
                      ": no pose overlaps the ground truth's time span (different run?)");
   }
-  json doc;
+  MapEvaluation ev;
+  json& doc = ev.doc;
   doc["map"] = args.map_dir.string();
   doc["gt"] = args.gt.string();
   doc["world"] = gt.world;
@@ -150,11 +195,15 @@ json evaluateMap(const MapEvalArgs& args) {
     doc["label_check"] = labelJson(checkLabels(gt, *points, pe.alignment));
   }
   addSurfaceEvaluation(args, gt, points ? &*points : nullptr, pe.alignment, doc);
-  addTextureEvaluation(args, gt, pe.alignment, doc);
+  addTextureEvaluation(args, gt, pe.alignment, ev);
   if (points) {
-    addBaselineKeys(args.map_dir, gt, *points, pe.alignment, BaselineOptions{}, doc);
+    ev.files = addBaselineKeys(args.map_dir, gt, *points, pe.alignment, BaselineOptions{}, doc);
   }
-  return doc;
+  return ev;
+}
+
+json evaluateMap(const MapEvalArgs& args) {
+  return runEvaluation(args).doc;
 }
 
 int mapEvalMain(int argc, const char* const* argv) {
@@ -163,31 +212,14 @@ int mapEvalMain(int argc, const char* const* argv) {
     if (!args) {
       return 0;
     }
-    const json doc = evaluateMap(*args);
-    products::writeJsonFile(args->out, doc);
+    const std::vector<fs::path> outputs =
+        outputPaths(args->out, BaselineOptions{}.octomap_resolutions_m);
+    checkOutputsSpareInputs(outputs, knownInputs(args->map_dir, args->gt));  // before any work
+    MapEvaluation ev = runEvaluation(*args);
+    checkOutputsSpareInputs(outputs, ev.images);
+    writeEvaluation(args->out, ev.files, ev.doc);
     if (!args->quiet) {
-      std::printf("pose_ate_m %.4f (first-pose aligned %.4f, %zu poses)\n",
-                  doc["pose_ate_m"].get<double>(),
-                  doc["pose"]["ate_first_pose_aligned_m"].get<double>(),
-                  doc["pose"]["matched"].get<std::size_t>());
-      if (doc.contains("label_check")) {
-        std::printf("points on their labelled surface within 3 sigma: %.4f (median %.4f m)\n",
-                    doc["label_check"]["fraction_within_3sigma"].get<double>(),
-                    doc["label_check"]["median_m"].get<double>());
-      }
-      std::fputs(surfaceReportText(doc).c_str(), stdout);
-      std::fputs(baselineReportText(doc).c_str(), stdout);
-      if (doc.contains("texture")) {
-        for (const json& p : doc["texture"]["posters"]) {
-          if (p.contains("psnr_db")) {
-            std::printf("poster %d on surface %d: PSNR %.2f dB (shift %.1f, %.1f px)\n",
-                        p["poster"].get<int>(), p["surface"].get<int>(), p["psnr_db"].get<double>(),
-                        p["shift_px"][0].get<double>(), p["shift_px"][1].get<double>());
-          } else {
-            std::printf("poster %d: not textured in the map\n", p["poster"].get<int>());
-          }
-        }
-      }
+      printReport(ev.doc);
     }
     return 0;
   } catch (const Error& e) {

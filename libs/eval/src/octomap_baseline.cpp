@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -83,7 +84,14 @@ std::string btFileContent(octomap::OcTree& tree) {
   return s.str();
 }
 
+std::string octomapFileName(double resolution_m) {
+  char cm[32];
+  std::snprintf(cm, sizeof cm, "%g", std::round(resolution_m * 1e4) / 100);  // 0.1 mm steps
+  return std::string("octomap_") + cm + "cm.bt";
+}
+
 ScanOrigins readScanOrigins(const std::filesystem::path& csv) {
+  requireRegularFile(csv);
   std::ifstream in(csv);
   if (!in) {
     throw InputError(csv.string() + ": cannot open");
@@ -148,7 +156,8 @@ OctomapResult buildOctomap(const ScanOrigins& origins, const MapPoints& points,
   r.nodes = tree.size();
   r.leaves = tree.getNumLeafNodes();
   r.occupied_centres = occupiedCentres(tree, r.occupied_leaves);
-  r.file_bytes = btFileContent(tree).size();
+  r.bt_file = btFileContent(tree);
+  r.file_bytes = r.bt_file.size();
   return r;
 }
 

@@ -51,6 +51,7 @@ MapSurface parseRow(const std::string& line, const std::string& where) {
 }  // namespace
 
 std::vector<MapSurface> readMapSurfaces(const std::filesystem::path& csv) {
+  requireRegularFile(csv);
   std::ifstream in(csv);
   if (!in) {
     throw InputError(csv.string() + ": cannot open surfaces file");

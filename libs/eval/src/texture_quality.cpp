@@ -7,6 +7,7 @@
 
 #include "pmap/common/error.h"
 #include "pmap/eval/csv_row.h"
+#include "pmap/eval/map_files.h"
 
 namespace pmap::eval {
 namespace fs = std::filesystem;
@@ -245,6 +246,7 @@ std::vector<PosterScore> scorePosters(const GroundTruth& gt,
 }
 
 std::vector<MapTexture> readMapTextures(const fs::path& csv) {
+  requireRegularFile(csv);
   std::ifstream in(csv);
   if (!in) {
     throw InputError(csv.string() + ": cannot open");

@@ -4,6 +4,8 @@
 
 #include <chrono>
 
+#include "pmap/common/progress.h"
+
 namespace pmap::mapper {
 namespace {
 
@@ -48,12 +50,17 @@ MapProducts buildMapProducts(const MapperConfig& config, const MapperArgs& args,
   } else {
     p.frames = placeFrames(config, result, p.frames_without_pose);
     const std::filesystem::path images_dir = texture::externalImagesDir(args.rawlog);
+    ProgressLine progress("planar-mapper: textures", ProgressOptions{!args.quiet, 1.0, true});
+    std::uint64_t reads = 0;
+    const std::string of = ", " + std::to_string(p.frames.size()) + " frames";
     p.texture = texture::textureMap(
         p.model, p.frames,
-        [&images_dir](const texture::CameraFrame& f) {
+        [&](const texture::CameraFrame& f) {
+          progress.update(++reads, 0, "image reads (about 3 per used frame" + of + ")");
           return texture::loadFrameImage(f, images_dir);
         },
         config.texture);
+    progress.finish(p.texture->message);
   }
   p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return p;

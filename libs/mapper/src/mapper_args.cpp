@@ -101,6 +101,10 @@ std::optional<MapperArgs> parseMapperArgs(int argc, const char* const* argv) {
                                    "with --gui: keep the final map shown S seconds, then exit "
                                    "(default: until the window is closed or a key pressed)",
                                    false, -1.0, "S", cmd);
+  TCLAP::SwitchArg list_labels("", "list-labels",
+                               "print the sensor labels of the rawlog (class, label, count, first "
+                               "record) and exit",
+                               cmd);
   TCLAP::SwitchArg quiet("q", "quiet", "no progress line", cmd);
 
   if (!config::parseCommandLine(cmd, argc, argv)) {
@@ -112,18 +116,35 @@ std::optional<MapperArgs> parseMapperArgs(int argc, const char* const* argv) {
   a.cloud = cloud.getValue();
   a.poses = poses.getValue();
   a.out = out.getValue();
-  if (!rawlog.getValue().empty()) {
-    a.rawlog = rawlog.getValue();
-  } else if (a.cloud.empty()) {
-    a.rawlog = defaultSamplePath();
-  }
   if (!a.cloud.empty() && !rawlog.getValue().empty()) {
     throw ConfigError("usage: --cloud and --rawlog are exclusive");
+  }
+  if (!rawlog.getValue().empty()) {
+    a.rawlog = rawlog.getValue();
+  } else if (a.cloud.empty() && config.isSet()) {
+    // The bundled sample goes with the default configuration only: another
+    // ini is for another log, which the user forgot to name.
+    throw ConfigError("usage: --config " + config.getValue() +
+                      " needs an input: give --rawlog FILE or --cloud FILE.ply (without "
+                      "--config, planar-mapper maps its bundled sample)");
+  } else if (a.cloud.empty()) {
+    a.rawlog = defaultSamplePath();
+    a.rawlog_is_sample = true;
+  }
+  a.list_labels = list_labels.getValue();
+  if (a.list_labels && !a.cloud.empty()) {
+    throw ConfigError("usage: --list-labels reads a rawlog, not a --cloud");
   }
   a.mode = mode.getValue();
   if (snapshot.getValue() < 0 || snapshot.getValue() > 1000000000 ||
       !(playback.getValue() >= 0.0) || !std::isfinite(playback.getValue())) {
     throw ConfigError("usage: --snapshot-every must be >= 0 and --playback-rate a number >= 0");
+  }
+  if (snapshot.getValue() > 0 && (a.mode != "online" || poses_only.getValue())) {
+    throw ConfigError(
+        "usage: --snapshot-every writes the online map while it grows: it needs "
+        "--mode online (the default), not --mode " +
+        (poses_only.getValue() ? std::string("with --poses-only") : a.mode));
   }
   a.snapshot_every = static_cast<int>(snapshot.getValue());
   a.playback_rate = playback.getValue();

@@ -5,12 +5,13 @@
 #include "pmap/common/error.h"
 #include "pmap/common/text.h"
 #include "pmap/config/section_reader.h"
+#include "pmap/config/strict_mrpt_config.h"
 
 namespace pmap::mapper {
 namespace {
 
 const std::vector<std::string>& projectSections() {
-  static const std::vector<std::string> s = {"Sensors",  "Output",  "PlanarEM",
+  static const std::vector<std::string> s = {"Sensors",  "Poses",   "Output",    "PlanarEM",
                                              "OnlineEM", "Texture", "Refinement"};
   return s;
 }
@@ -24,7 +25,7 @@ bool ownedByMrpt(const std::string& section) {
   return false;
 }
 
-void rejectUnknownSections(const config::IniDocument& doc) {
+void rejectUnknownSections(const config::IniDocument& doc, std::vector<std::string>& errors) {
   std::vector<std::string> known = projectSections();
   known.push_back("ICP");
   known.push_back("MappingApplication");
@@ -33,10 +34,30 @@ void rejectUnknownSections(const config::IniDocument& doc) {
         std::find(projectSections().begin(), projectSections().end(), s) != projectSections().end();
     if (!project && !ownedByMrpt(s)) {
       const std::string near = nearestWord(s, known);
-      throw ConfigError(doc.origin() + ": unknown section [" + s + "]" +
-                        (near.empty() ? "" : " (did you mean [" + near + "]?)"));
+      errors.push_back(doc.origin() + ": unknown section [" + s + "]" +
+                       (near.empty() ? "" : " (did you mean [" + near + "]?)"));
     }
   }
+}
+
+// Runs `load`, adding the lines of a ConfigError it throws to `errors`.
+template <class F>
+void collect(std::vector<std::string>& errors, F&& load) {
+  try {
+    load();
+  } catch (const ConfigError& e) {
+    for (std::string& line : splitLines(e.what())) {
+      errors.push_back(std::move(line));
+    }
+  }
+}
+
+template <class T>
+void loadSection(MapperConfig& cfg, const std::string& section, T& opts,
+                 std::vector<std::string>& errors) {
+  collect(errors, [&] {
+    config::loadOptions(cfg.doc, section, opts, cfg.effective.get(), config::Presence::kOptional);
+  });
 }
 
 }  // namespace
@@ -44,6 +65,15 @@ void rejectUnknownSections(const config::IniDocument& doc) {
 const std::vector<std::string>& mrptSections() {
   static const std::vector<std::string> s = {"ICP", "MappingApplication*"};
   return s;
+}
+
+void PosesSection::load(config::SectionReader& r) {
+  r.read("max_speed_mps", motion.max_speed_mps);
+  r.read("max_turn_rate_dps", motion.max_turn_rate_dps);
+  r.read("max_step_m", motion.max_step_m);
+  r.read("max_step_deg", motion.max_step_deg);
+  r.read("max_coordinate_m", motion.max_coordinate_m);
+  r.read("reset_after", motion.reset_after);
 }
 
 void OutputOptions::load(config::SectionReader& reader) {
@@ -155,6 +185,34 @@ bool PlanarEmSection::validate(std::string* why) const {
   return em.validate(why);
 }
 
+std::unique_ptr<poses::IcpPoseTracker> makeIcpTracker(const MapperConfig& config,
+                                                      std::vector<std::string>* app_keys) {
+  config::StrictMrptConfig mrpt_config(config.doc, mrptSections(), config.effective.get());
+  std::vector<std::string> errors;
+  collect(errors, [&] { mrpt_config.requireSection("ICP"); });
+  collect(errors, [&] { mrpt_config.requireSection("MappingApplication"); });
+  std::unique_ptr<poses::IcpPoseTracker> tracker;
+  collect(errors, [&] {
+    try {
+      tracker = std::make_unique<poses::IcpPoseTracker>(mrpt_config);
+    } catch (const Error&) {
+      throw;
+    } catch (const std::exception& e) {
+      mrpt_config.throwLoaderError(e);
+    }
+  });
+  collect(errors, [&] {
+    const std::vector<std::string> keys = mrpt_config.checkAllRead();
+    if (app_keys != nullptr) {
+      *app_keys = keys;
+    }
+  });
+  if (!errors.empty()) {
+    throw ConfigError(joinLines(errors));
+  }
+  return tracker;
+}
+
 MapperConfig loadMapperConfig(const std::filesystem::path& path) {
   MapperConfig cfg{config::IniDocument::load(path),
                    std::make_shared<config::EffectiveConfig>(),
@@ -163,20 +221,39 @@ MapperConfig loadMapperConfig(const std::filesystem::path& path) {
                    {},
                    {},
                    {},
+                   {},
+                   {},
                    {}};
-  rejectUnknownSections(cfg.doc);
-  config::loadOptions(cfg.doc, "Sensors", cfg.sensors, cfg.effective.get());
-  config::loadOptions(cfg.doc, "Output", cfg.output, cfg.effective.get());
-  config::loadOptions(cfg.doc, "PlanarEM", cfg.planar_em, cfg.effective.get());
+  std::vector<std::string> errors;
+  rejectUnknownSections(cfg.doc, errors);
+  loadSection(cfg, "Sensors", cfg.sensors, errors);
+  PosesSection poses;
+  loadSection(cfg, "Poses", poses, errors);
+  cfg.motion = poses.motion;
+  loadSection(cfg, "Output", cfg.output, errors);
+  loadSection(cfg, "PlanarEM", cfg.planar_em, errors);
   OnlineEmSection online;
-  config::loadOptions(cfg.doc, "OnlineEM", online, cfg.effective.get());
+  loadSection(cfg, "OnlineEM", online, errors);
   cfg.online_em = online.online;
   TextureSection texture;
-  config::loadOptions(cfg.doc, "Texture", texture, cfg.effective.get());
+  loadSection(cfg, "Texture", texture, errors);
   cfg.texture = texture.texture;
   RefinementSection refinement;
-  config::loadOptions(cfg.doc, "Refinement", refinement, cfg.effective.get());
+  loadSection(cfg, "Refinement", refinement, errors);
   cfg.refine = refinement.refine;
+  std::vector<std::string> app_keys;
+  collect(errors, [&] { makeIcpTracker(cfg, &app_keys); });  // MRPT's sections, checked once
+  if (!errors.empty()) {
+    throw ConfigError(joinLines(errors));
+  }
+  if (!app_keys.empty()) {
+    std::string list;
+    for (const std::string& k : app_keys) {
+      list += (list.empty() ? "" : ", ") + k;
+    }
+    cfg.warnings.push_back(cfg.doc.origin() + ": ignored " + std::to_string(app_keys.size()) +
+                           " key(s) that only MRPT's own applications read: " + list);
+  }
   return cfg;
 }
 

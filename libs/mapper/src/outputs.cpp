@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pmap/common/atomic_file.h"
+#include "pmap/common/progress.h"
 #include "pmap/mapper/map_outputs.h"
 #include "pmap/poses/poses_file.h"
 #include "pmap/products/json_file.h"
@@ -151,7 +152,8 @@ void addPlanarMap(const MappingResult& r, json& s) {
   s["iterations"] = em.iterations;
   s["termination"] = em::toString(em.termination);
   s["em_message"] = em.message;
-  s["ms_per_iteration"] = em.iterations > 0 ? 1000.0 * r.timing.em_s / em.iterations : 0.0;
+  s["ms_per_iteration"] =
+      em.iterations > 0 ? 1000.0 * s["timing_s"]["em"].get<double>() / em.iterations : 0.0;
   s["history"] = historyJson(em);
   if (!r.online.empty()) {
     addOnline(r, s);
@@ -161,10 +163,26 @@ void addPlanarMap(const MappingResult& r, json& s) {
   }
 }
 
-json summaryJson(const MapperArgs& args, const MappingResult& r, double write_s, double total_s) {
-  const double processing_s =
-      r.timing.read_s + r.timing.pose_s + r.timing.map_s + r.timing.em_s + r.timing.refine_s;
+// Every stage's exclusive wall time; they add up to "total" (the run so far).
+json timingJson(const StageClock& clock) {
+  json t;
+  double total = 0;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(Stage::kCount); ++i) {
+    const double seconds = clock.seconds(static_cast<Stage>(i));
+    t[stageKey(static_cast<Stage>(i))] = seconds;
+    total += seconds;
+  }
+  t["total"] = total;
+  return t;
+}
+
+json summaryJson(const MapperArgs& args, const MappingResult& r, const StageClock& clock) {
   json s;
+  s["timing_s"] = timingJson(clock);
+  const json& t = s["timing_s"];
+  const double processing_s = t["read"].get<double>() + t["pose"].get<double>() +
+                              t["map"].get<double>() + t["em"].get<double>() +
+                              t["refine"].get<double>();
   s["input"] = inputSummary(args, r);
   s["scans"] = r.placement.placed;
   s["scans_without_pose"] = r.placement.without_pose;
@@ -179,12 +197,16 @@ json summaryJson(const MapperArgs& args, const MappingResult& r, double write_s,
                 {"count", r.trajectory.size()},
                 {"scans_matched", r.pose_stats.scans_matched},
                 {"odometry_readings", r.pose_stats.odometry_readings},
-                {"non_monotonic", r.pose_stats.non_monotonic}};
+                {"non_monotonic", r.pose_stats.non_monotonic},
+                {"actions_timed_by_frame", r.pose_stats.actions_timed_by_frame},
+                {"actions_without_time", r.pose_stats.actions_without_time},
+                {"implausible_dropped", r.motion.dropped()},
+                {"implausible_by_reason",
+                 {{"non_finite", r.motion.non_finite},
+                  {"beyond_max_coordinate", r.motion.too_far},
+                  {"step_beyond_limits", r.motion.too_fast}}},
+                {"odometry_resets", r.motion.resets}};
   s["duration_s"] = r.duration();
-  s["timing_s"] = {{"total", total_s},           {"read", r.timing.read_s},
-                   {"pose", r.timing.pose_s},    {"map", r.timing.map_s},
-                   {"em", r.timing.em_s},        {"write", write_s},
-                   {"refine", r.timing.refine_s}};
   s["mode"] = r.em_mode.empty() ? args.mode : r.em_mode;
   s["warnings"] = r.warnings;
   s["pose_per_scan_ms"] = percentiles(r.pose_step_ms);
@@ -192,8 +214,11 @@ json summaryJson(const MapperArgs& args, const MappingResult& r, double write_s,
     addPlanarMap(r, s);
   }
   // One definition everywhere: recorded duration / wall time of reading,
-  // poses and mapping (points, raw map and EM; writing excluded).
-  s["realtime_factor"] = processing_s > 0 ? r.duration() / processing_s : 0.0;
+  // poses and mapping (points, raw map, EM and refinement; textures and
+  // writing excluded). A single
+  // frame has no duration: no factor (null).
+  s["realtime_factor"] =
+      processing_s > 0 && r.duration() > 0 ? json(r.duration() / processing_s) : json(nullptr);
   return s;
 }
 
@@ -232,14 +257,16 @@ void writeRawMapGlb(const fs::path& path, const MappingResult& r) {
 }  // namespace
 
 void writeOutputs(const MapperConfig& config, const MapperArgs& args, const MappingResult& r,
-                  const MapProducts* products, double elapsed_before_write_s) {
-  const auto t0 = std::chrono::steady_clock::now();
+                  const MapProducts* products, StageClock& clock) {
+  auto in_write = clock.enter(Stage::kWrite);
+  ProgressLine progress("planar-mapper: writing", ProgressOptions{!args.quiet, 1.0, true});
   ensureWritableDirectory(args.out);
   writeTextFileAtomically(args.out / "effective.ini",
                           config.effective->toIniText({"effective configuration of planar-mapper",
                                                        "source: " + config.doc.origin()}));
   if (!r.trajectory.empty()) {
     poses::writePosesFile(args.out / "poses.txt", r.trajectory);
+    poses::writeTumFile(args.out / "poses.tum", r.trajectory);
   }
   if (!args.poses_only) {
     products::writeScansCsv(args.out / "scans.csv", r.map);
@@ -259,15 +286,14 @@ void writeOutputs(const MapperConfig& config, const MapperArgs& args, const Mapp
       writeMapFiles(args.out, *products, r, config.output);
     }
   }
-  const double write_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  json summary = summaryJson(args, r, write_s, elapsed_before_write_s + write_s);
+  json summary = summaryJson(args, r, clock);
   if (products != nullptr) {
     summary["texture"] = textureSummary(config, *products);
-    summary["timing_s"]["texture"] = products->seconds;
     summary["report_warnings"] = writeReportFiles(args.out, *products, r, summary);
+    summary["timing_s"] = timingJson(clock);  // the report included
   }
   products::writeJsonFile(args.out / "summary.json", summary);
+  progress.finish();
 }
 
 }  // namespace pmap::mapper

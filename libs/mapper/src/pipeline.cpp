@@ -8,6 +8,7 @@
 #include "pmap/common/error.h"
 #include "pmap/common/progress.h"
 #include "pmap/config/strict_mrpt_config.h"
+#include "pmap/input/label_inventory.h"
 #include "pmap/input/ply_cloud.h"
 #include "pmap/input/rawlog_reader.h"
 #include "pmap/points/neighbour_graph.h"
@@ -18,36 +19,19 @@
 namespace pmap::mapper {
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using Clock = std::chrono::steady_clock;  // per-scan pose timings
 double since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-/// ICP tracker configured from [ICP] / [MappingApplication*]; every key
-/// there must be read by MRPT's loaders.
-std::unique_ptr<poses::IcpPoseTracker> makeTracker(const MapperConfig& config) {
-  config::StrictMrptConfig mrpt_config(config.doc, mrptSections(), config.effective.get());
-  mrpt_config.requireSection("ICP");
-  mrpt_config.requireSection("MappingApplication");
-  std::unique_ptr<poses::IcpPoseTracker> tracker;
-  try {
-    tracker = std::make_unique<poses::IcpPoseTracker>(mrpt_config);
-  } catch (const Error&) {
-    throw;
-  } catch (const std::exception& e) {
-    mrpt_config.throwLoaderError(e);
-  }
-  mrpt_config.checkAllRead();
-  return tracker;
 }
 
 class RawlogRun {
  public:
   RawlogRun(const MapperConfig& config, const MapperArgs& args, MappingResult& result,
-            LiveView* live)
+            StageClock& clock, LiveView* live)
       : config_(config),
         args_(args),
         result_(result),
+        clock_(clock),
         live_(live),
         online_(args.mode == "online" && !args.poses_only
                     ? std::make_unique<OnlineStage>(config.planar_em.em, config.online_em, args.out,
@@ -59,49 +43,90 @@ class RawlogRun {
             [this](const input::StructureScan& s, std::size_t record) { onPlaced(s, record); }) {}
 
   void run() {
-    auto tracker = makeTracker(config_);  // validates the ICP sections in every mode
-    poses::PoseStage stage = args_.poses.empty()
-                                 ? poses::PoseStage(std::move(tracker))
-                                 : poses::PoseStage(poses::readPosesFile(args_.poses));
+    checkLabels();
+    poses::PoseStage stage = makePoseStage();
     result_.pose_source = stage.source();
     input::RawlogReaderOptions reader_options;
     reader_options.accept_truncated = args_.accept_truncated;
     input::RawlogReader reader(args_.rawlog, reader_options);
     input::ObservationSource source(reader, input::RoleClassifier(config_.sensors),
                                     args_.selection);
-    ProgressLine progress("planar-mapper", !args_.quiet);
+    ProgressLine progress("planar-mapper: reading", !args_.quiet);
     Pacer pacer(args_.playback_rate);
     input::InputStep step;
     for (;;) {
-      auto t0 = Clock::now();
-      const bool more = source.next(step);
-      result_.timing.read_s += since(t0);
+      bool more = false;
+      {
+        auto in_read = clock_.enter(Stage::kRead);
+        more = source.next(step);
+      }
       if (!more) {
         break;
       }
       if (!step.observations.empty()) {
         pacer.waitFor(mrpt::Clock::toDouble(step.observations.front().obs->timestamp));
       }
-      t0 = Clock::now();
-      stage.process(step, args_.rawlog.string());
-      const double pose_s = since(t0);
-      result_.timing.pose_s += pose_s;
-      if (carriesPoses(step)) {
-        result_.pose_step_ms.push_back(1000.0 * pose_s);
+      processPoses(stage, step);
+      {
+        auto in_map = clock_.enter(Stage::kMap);
+        collect(step);
+        placer_.drain(stage.trajectory(), stage.fixed());
       }
-      t0 = Clock::now();
-      collect(step);
-      placer_.drain(stage.trajectory(), stage.fixed());
-      result_.timing.map_s += since(t0);
-      progress.update(reader.compressedPosition(), reader.fileSize(),
-                      std::to_string(result_.map.size()) + " points");
+      progress.update(reader.compressedPosition(), reader.fileSize(), progressDetail(stage));
     }
-    finish(stage, source);
-    progress.finish(std::to_string(result_.map.size()) + " points");
+    {
+      auto in_map = clock_.enter(Stage::kMap);
+      finish(stage, source);
+    }
+    progress.finish(progressDetail(stage));
     result_.truncation = reader.truncationMessage();
   }
 
  private:
+  // The pose stage: ICP, or the given poses (checked against the motion
+  // limits like odometry).
+  poses::PoseStage makePoseStage() const {
+    auto tracker = makeIcpTracker(config_);  // validates the ICP sections in every mode
+    if (args_.poses.empty()) {
+      return poses::PoseStage(std::move(tracker), config_.motion);
+    }
+    return poses::PoseStage(poses::readPosesFile(args_.poses), config_.motion);
+  }
+
+  // The roles this run uses must name labels the file has (label_inventory.h).
+  void checkLabels() {
+    input::RolesInUse used;
+    used.pose_laser = used.odometry = args_.poses.empty();
+    used.structure = !args_.poses_only;
+    used.cameras = !args_.poses_only && !args_.no_textures && config_.texture.enabled;
+    const input::LabelInventory inventory =
+        input::scanLabels(args_.rawlog, input::kLabelCheckRecords);
+    for (std::string& w : input::checkRoleLabels(config_.sensors, used, args_.selection.keep_labels,
+                                                 inventory, config_.doc.origin())) {
+      result_.warnings.push_back(std::move(w));
+    }
+  }
+
+  void processPoses(poses::PoseStage& stage, const input::InputStep& step) {
+    const auto t0 = Clock::now();
+    {
+      auto in_poses = clock_.enter(Stage::kPoses);
+      stage.process(step, args_.rawlog.string());
+    }
+    if (carriesPoses(step)) {
+      result_.pose_step_ms.push_back(1000.0 * since(t0));
+    }
+  }
+
+  std::string progressDetail(const poses::PoseStage& stage) const {
+    const std::string poses = std::to_string(stage.trajectory().size()) + " poses";
+    if (args_.poses_only) {
+      return poses;
+    }
+    return poses + ", " + std::to_string(placer_.stats().placed) + " structure scans, " +
+           std::to_string(result_.map.size()) + " points";
+  }
+
   void collect(const input::InputStep& step) {
     for (const auto& item : step.observations) {
       const double t = mrpt::Clock::toDouble(item.obs->timestamp);
@@ -134,6 +159,7 @@ class RawlogRun {
       mesh_.addScan(result_.map, record, scan.rows, scan.cols, scan.organised);
     }
     if (online_ && scan.organised) {
+      auto in_em = clock_.enter(Stage::kEm);
       online_->addScan(result_.map, record);
     } else if (online_) {
       unorganised_ = true;
@@ -160,13 +186,17 @@ class RawlogRun {
     }
     placer_.drain(stage.trajectory(), true);
     result_.trajectory = stage.trajectory();
+    result_.motion = stage.gate().stats();
+    const std::string dropped = stage.gate().summary(
+        args_.poses.empty() ? "odometry readings or increments" : "given poses");
+    if (!dropped.empty()) {
+      result_.warnings.push_back(args_.rawlog.string() + ": " + dropped);
+    }
     result_.placement = placer_.stats();
     result_.raw_triangles = mesh_.triangles();
     checkUsable();
     if (online_ && !unorganised_) {
       result_.em_mode = "online";
-      result_.timing.em_s = online_->seconds();
-      result_.timing.map_s -= online_->seconds();  // the EM's share of the placing time
       result_.online = online_->history();
       em::EmResult em;
       em.map = online_->map();
@@ -206,6 +236,7 @@ class RawlogRun {
   const MapperConfig& config_;
   const MapperArgs& args_;
   MappingResult& result_;
+  StageClock& clock_;
   LiveView* live_;
   std::unique_ptr<OnlineStage> online_;
   bool unorganised_ = false;
@@ -214,17 +245,20 @@ class RawlogRun {
   bool seen_any_ = false;
 };
 
-MappingResult runCloud(const MapperArgs& args) {
+MappingResult runCloud(const MapperArgs& args, StageClock& clock) {
   MappingResult result;
-  const auto t0 = Clock::now();
-  input::StructureScan scan = input::readPlyCloud(args.cloud);
-  result.timing.read_s = since(t0);
+  input::StructureScan scan;
+  {
+    auto in_read = clock.enter(Stage::kRead);
+    scan = input::readPlyCloud(args.cloud);
+  }
   result.pose_source = "cloud";
   result.dropped = scan.dropped;
   result.measurements = scan.measurements();
   if (scan.points.empty()) {
     throw InputError(args.cloud.string() + ": no finite points");
   }
+  auto in_map = clock.enter(Stage::kMap);
   result.map.addScan(scan, mrpt::math::TPose3D());
   result.placement.placed = 1;
   result.input.structure_scans = 1;
@@ -235,11 +269,20 @@ points::NeighbourGraph graphOf(const MapperConfig& config, const MappingResult& 
   return points::neighbourGraph(result.map, config.planar_em.cloud_neighbour_radius_m);
 }
 
-void runEm(const MapperConfig& config, const points::NeighbourGraph& graph, MappingResult& result) {
-  const auto t0 = Clock::now();
-  result.em =
-      em::OfflineEm(config.planar_em.em).run(result.map.xyz(), graph.neighbours, graph.rows);
-  result.timing.em_s += since(t0);
+void runEm(const MapperConfig& config, const MapperArgs& args, const points::NeighbourGraph& graph,
+           MappingResult& result) {
+  ProgressLine progress("planar-mapper: EM", ProgressOptions{!args.quiet, 1.0, false});
+  em::OfflineEm em(config.planar_em.em);
+  const int max_iterations = config.planar_em.em.max_iterations;
+  em.setObserver([&](const em::IterationRecord& rec) {
+    char detail[96];
+    std::snprintf(detail, sizeof detail, "%d surfaces, %.1f %% explained", rec.surfaces,
+                  100.0 * rec.explained_fraction);
+    progress.update(static_cast<std::uint64_t>(rec.iteration + 1),
+                    static_cast<std::uint64_t>(max_iterations), detail);
+  });
+  result.em = em.run(result.map.xyz(), graph.neighbours, graph.rows);
+  progress.finish(result.em->message);
 }
 
 // Each point's sensor origin (the side a surface was seen from).
@@ -253,46 +296,46 @@ std::vector<Eigen::Vector3d> sensorOrigins(const points::PointMap& map) {
 }
 
 // Fusion and the Ceres refinement of the EM's map (offline or online).
-void runRefinement(const MapperConfig& config, const points::NeighbourGraph& graph,
-                   MappingResult& result) {
-  const auto t0 = Clock::now();
-  result.refine =
-      refine::refineMap(result.map.xyz(), graph.neighbours, graph.rows, config.planar_em.em,
-                        config.refine, result.em->map, sensorOrigins(result.map));
+void runRefinement(const MapperConfig& config, const MapperArgs& args,
+                   const points::NeighbourGraph& graph, MappingResult& result) {
+  ProgressLine progress("planar-mapper: refinement", ProgressOptions{!args.quiet, 1.0, true});
+  result.refine = refine::refineMap(
+      result.map.xyz(), graph.neighbours, graph.rows, config.planar_em.em, config.refine,
+      result.em->map,
+      config.refine.openings ? sensorOrigins(result.map) : std::vector<Eigen::Vector3d>{});
   if (result.refine->fusion.changed_pairs > 0) {
     result.em->message +=
         "; refinement fused " + std::to_string(result.refine->fusion.changed_pairs) + " pairs";
   }
-  result.timing.refine_s += since(t0);
+  progress.finish(result.refine->message);
 }
 
 }  // namespace
 
-MappingResult runPipeline(const MapperConfig& config, const MapperArgs& args, LiveView* live) {
+MappingResult runPipeline(const MapperConfig& config, const MapperArgs& args, StageClock& clock,
+                          LiveView* live) {
   MappingResult result;
   if (!args.cloud.empty()) {
-    result = runCloud(args);
+    result = runCloud(args, clock);
   } else {
-    RawlogRun(config, args, result, live).run();
+    RawlogRun(config, args, result, clock, live).run();
   }
   const bool online_done = result.em_mode == "online";
   std::optional<points::NeighbourGraph> graph;
   if (!args.poses_only && (args.mode == "offline" || (args.mode == "online" && !online_done))) {
     result.em_mode = "offline";  // online falls back for unorganised clouds
-    const auto t0 = Clock::now();
+    auto in_em = clock.enter(Stage::kEm);
     graph = graphOf(config, result);
-    result.timing.em_s = since(t0);
-    runEm(config, *graph, result);
+    runEm(config, args, *graph, result);
   } else if (args.mode == "raw" || args.poses_only) {
     result.em_mode = args.poses_only ? "poses-only" : "raw";
   }
   if (result.em && config.refine.enabled && !args.no_refine) {
-    const auto t0 = Clock::now();
+    auto in_refine = clock.enter(Stage::kRefine);
     if (!graph) {
       graph = graphOf(config, result);
     }
-    result.timing.refine_s = since(t0);
-    runRefinement(config, *graph, result);
+    runRefinement(config, args, *graph, result);
   }
   noteNothingFound(args, result);
   return result;

@@ -1,17 +1,71 @@
 #include "pmap/mapper/planar_mapper_app.h"
 
-#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 
 #include "pmap/common/error.h"
 #include "pmap/common/text.h"
+#include "pmap/input/label_inventory.h"
 #include "pmap/mapper/map_products.h"
 #include "pmap/mapper/output_guard.h"
 #include "pmap/mapper/outputs.h"
 #include "pmap/mapper/pipeline.h"
 
 namespace pmap::mapper {
+namespace {
+
+// --list-labels: every label of the file, as rawlog-edit --info would.
+void listLabels(const MapperArgs& args) {
+  const input::LabelInventory inv = input::scanLabels(args.rawlog, 0);
+  std::printf("%s: %zu records%s\n", args.rawlog.string().c_str(), inv.records,
+              inv.error.empty() ? "" : " (then bad data)");
+  std::printf("%-28s %-24s %10s %12s\n", "class", "label", "count", "first record");
+  for (const input::LabelCount& c : inv.labels) {
+    std::printf("%-28s %-24s %10zu %12zu\n", c.class_name.c_str(),
+                c.label.empty() ? "'' (unlabelled)" : c.label.c_str(), c.count, c.first_record);
+  }
+  if (inv.odometry_actions > 0) {
+    std::printf("%-28s %-24s %10zu\n", "CActionRobotMovement2D", "(actions: odometry)",
+                inv.odometry_actions);
+  }
+  if (!inv.error.empty()) {
+    throw InputError(inv.error);
+  }
+}
+
+double pathLength(const poses::Trajectory& t) {
+  double length = 0;
+  for (std::size_t i = 1; i < t.size(); ++i) {
+    const auto& a = t.poses()[i - 1].pose;
+    const auto& b = t.poses()[i].pose;
+    length += std::hypot(b.x - a.x, b.y - a.y, b.z - a.z);
+  }
+  return length;
+}
+
+void printSummary(const MapperArgs& args, const MappingResult& result) {
+  if (args.poses_only) {
+    const auto& last = result.trajectory.poses().back().pose;
+    std::fprintf(stderr,
+                 "planar-mapper: %zu poses (%s), path %.2f m, final pose x %.4f m, y %.4f m, "
+                 "yaw %.2f deg -> %s\n",
+                 result.trajectory.size(), result.pose_source.c_str(),
+                 pathLength(result.trajectory), last.x, last.y, last.yaw * 180.0 / M_PI,
+                 args.out.c_str());
+    return;
+  }
+  std::fprintf(stderr, "planar-mapper: %zu scans, %zu points, %zu raw triangles -> %s\n",
+               result.placement.placed, result.map.size(), result.raw_triangles.size(),
+               args.out.c_str());
+  if (result.em) {
+    std::fprintf(stderr, "planar-mapper: EM %s; explained %.1f %%, %zu fine triangles\n",
+                 result.em->message.c_str(), 100.0 * result.em->map.explained_fraction,
+                 result.em->map.fine_triangles.size());
+  }
+}
+
+}  // namespace
 
 bool PlanarMapperApp::initialize(int argc, const char* const* argv) {
   args_ = parseMapperArgs(argc, argv);
@@ -19,27 +73,39 @@ bool PlanarMapperApp::initialize(int argc, const char* const* argv) {
     return false;
   }
   config_ = loadMapperConfig(args_->config);
+  if (args_->list_labels) {
+    return true;
+  }
+  if (args_->rawlog_is_sample && !args_->quiet) {
+    std::fprintf(stderr,
+                 "planar-mapper: no --rawlog given: mapping the bundled sample %s with %s\n",
+                 args_->rawlog.c_str(), args_->config.c_str());
+  }
   checkOutputsSpareInputs(*args_);  // before any work: never write over an input
   return true;
 }
 
 void PlanarMapperApp::run() {
-  const auto t0 = std::chrono::steady_clock::now();
+  if (args_->list_labels) {
+    listLabels(*args_);
+    return;
+  }
+  StageClock clock;
   std::unique_ptr<LiveView> live;
   if (args_->gui) {
     LiveViewOptions options;
     options.hold_s = args_->gui_hold_s;
     live = std::make_unique<LiveView>(options);
   }
-  const MappingResult result = runPipeline(*config_, *args_, live.get());
+  MappingResult result = runPipeline(*config_, *args_, clock, live.get());
+  result.warnings.insert(result.warnings.begin(), config_->warnings.begin(),
+                         config_->warnings.end());
   std::optional<MapProducts> products;
   if (result.em) {
+    auto in_texture = clock.enter(Stage::kTexture);
     products = buildMapProducts(*config_, *args_, result);
   }
-  // Everything before writing, the map products (textures) included.
-  const double elapsed =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  writeOutputs(*config_, *args_, result, products ? &*products : nullptr, elapsed);
+  writeOutputs(*config_, *args_, result, products ? &*products : nullptr, clock);
   if (live) {
     live->finish(products ? products->model : products::MapModel{}, result.map);
   }
@@ -48,14 +114,7 @@ void PlanarMapperApp::run() {
     std::fprintf(stderr, "planar-mapper: warning: %s\n", w.c_str());
   }
   if (!args_->quiet) {
-    std::fprintf(stderr, "planar-mapper: %zu scans, %zu points, %zu raw triangles -> %s\n",
-                 result.placement.placed, result.map.size(), result.raw_triangles.size(),
-                 args_->out.c_str());
-    if (result.em) {
-      std::fprintf(stderr, "planar-mapper: EM %s; explained %.1f %%, %zu fine triangles\n",
-                   result.em->message.c_str(), 100.0 * result.em->map.explained_fraction,
-                   result.em->map.fine_triangles.size());
-    }
+    printSummary(*args_, result);
     if (!result.truncation.empty()) {
       std::fprintf(stderr, "planar-mapper: warning: %s (accepted)\n", result.truncation.c_str());
     }
@@ -71,7 +130,9 @@ int planarMapperMain(int argc, const char* const* argv) {
     app.run();
     return 0;
   } catch (const Error& e) {
-    std::fprintf(stderr, "planar-mapper: error: %s\n", e.what());
+    for (const std::string& line : splitLines(e.what())) {
+      std::fprintf(stderr, "planar-mapper: error: %s\n", line.c_str());
+    }
     return e.exitCode();
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "planar-mapper: error: out of memory\n");

@@ -1,16 +1,144 @@
 #include "pmap/poses/pose_stage.h"
 
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/system/datetime.h>
+
+#include <cmath>
+
 #include "pmap/common/error.h"
 #include "pmap/common/text.h"
 
 namespace pmap::poses {
+namespace {
 
-PoseStage::PoseStage(std::unique_ptr<IcpPoseTracker> tracker) : tracker_(std::move(tracker)) {}
+using mrpt::math::TPose3D;
 
-PoseStage::PoseStage(Trajectory given) : given_(std::move(given)) {}
+// Seconds, NaN for a missing timestamp (zero or invalid: MRPT's demo logs
+// carry actions with zero timestamps).
+double secondsOf(mrpt::Clock::time_point t) {
+  if (t == INVALID_TIMESTAMP || t.time_since_epoch().count() == 0) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  return mrpt::Clock::toDouble(t);
+}
+
+TPose3D pose3(const mrpt::poses::CPose2D& p) {
+  return TPose3D(p.x(), p.y(), 0.0, p.phi(), 0.0, 0.0);
+}
+
+bool same(const TPose3D& a, const TPose3D& b) {
+  return a.x == b.x && a.y == b.y && a.z == b.z && a.yaw == b.yaw;
+}
+
+// The given poses that pass the gate.
+Trajectory gated(const Trajectory& given, MotionGate& gate) {
+  Trajectory out;
+  for (const TimedPose& p : given.poses()) {
+    if (const auto used = gate.absolute(p.t, p.pose)) {
+      out.append(p.t, *used);
+    }
+  }
+  return out;
+}
+
+MotionLimits withoutReset(MotionLimits limits) {
+  limits.reset_after = 0;
+  return limits;
+}
+
+}  // namespace
+
+PoseStage::PoseStage(std::unique_ptr<IcpPoseTracker> tracker, MotionLimits limits)
+    : tracker_(std::move(tracker)), gate_(limits) {}
+
+PoseStage::PoseStage(const Trajectory& given, MotionLimits limits)
+    : gate_(withoutReset(limits)), given_(gated(given, gate_)) {}
+
+PoseStats PoseStage::stats() const {
+  PoseStats s = tracker_ ? tracker_->stats() : PoseStats{};
+  s.actions_timed_by_frame = actions_timed_by_frame_;
+  s.actions_without_time = actions_without_time_;
+  return s;
+}
 
 const Trajectory& PoseStage::trajectory() const {
   return tracker_ ? tracker_->trajectory() : given_;
+}
+
+void PoseStage::processOdometry(const mrpt::obs::CObservation::Ptr& obs) {
+  const auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(obs);
+  if (!odo) {
+    return;
+  }
+  const TPose3D reading = pose3(odo->odometry);
+  const auto used = gate_.absolute(secondsOf(obs->timestamp), reading);
+  if (!used) {
+    return;
+  }
+  if (same(*used, reading)) {
+    tracker_->processObservation(obs, true);
+    return;
+  }
+  auto moved = std::make_shared<mrpt::obs::CObservationOdometry>(*odo);  // re-anchored
+  moved->odometry = mrpt::poses::CPose2D(used->x, used->y, used->yaw);
+  tracker_->processObservation(moved, true);
+}
+
+// An action whose odometry increment is implausible is dropped whole. An
+// action without a timestamp (zero: MRPT's localization_demo.rawlog) takes
+// its frame's time, `frame_t` (MRPT's ICP asserts on a missing one); with no
+// time at all it is dropped and counted.
+mrpt::obs::CActionCollection::Ptr PoseStage::gatedAction(
+    const mrpt::obs::CActionCollection::Ptr& action, double frame_t) {
+  if (!action) {
+    return action;
+  }
+  auto out = std::make_shared<mrpt::obs::CActionCollection>();
+  for (const auto& a : *action) {
+    const auto* move = dynamic_cast<const mrpt::obs::CActionRobotMovement2D*>(a.get());
+    if (move == nullptr) {
+      out->insertPtr(a.get_ptr());
+      continue;
+    }
+    double t = secondsOf(move->timestamp);
+    if (!std::isfinite(t) && std::isfinite(frame_t)) {
+      ++actions_timed_by_frame_;
+      t = frame_t;
+    }
+    const double dt = t - last_action_t_;
+    last_action_t_ = std::isfinite(t) ? t : last_action_t_;
+    if (!std::isfinite(t)) {
+      ++actions_without_time_;
+      return nullptr;
+    }
+    // The increment MRPT's ICP composes: the mean of the movement's PDF.
+    const mrpt::poses::CPose2D step =
+        move->poseChange ? move->poseChange->getMeanVal() : move->rawOdometryIncrementReading;
+    if (!gate_.increment(dt, pose3(step))) {
+      return nullptr;
+    }
+    auto timed = std::make_shared<mrpt::obs::CActionRobotMovement2D>(*move);
+    timed->timestamp = mrpt::Clock::fromDouble(t);
+    out->insertPtr(timed);
+  }
+  return out;
+}
+
+void PoseStage::processFrame(const input::InputStep& step) {
+  std::vector<mrpt::obs::CObservation::Ptr> for_icp;
+  double frame_t = std::numeric_limits<double>::quiet_NaN();
+  for (const auto& item : step.observations) {
+    if (item.roles.pose_laser || item.roles.odometry) {
+      for_icp.push_back(item.obs);
+      const double t = secondsOf(item.obs->timestamp);
+      frame_t = std::isfinite(frame_t) ? std::max(frame_t, t) : t;
+    }
+  }
+  const auto action = gatedAction(step.action, frame_t);
+  if (!for_icp.empty() || action) {
+    tracker_->processFrame(action, for_icp);
+  }
 }
 
 void PoseStage::process(const input::InputStep& step, const std::string& file) {
@@ -19,20 +147,14 @@ void PoseStage::process(const input::InputStep& step, const std::string& file) {
   }
   try {
     if (step.sensory_frame) {
-      std::vector<mrpt::obs::CObservation::Ptr> for_icp;
-      for (const auto& item : step.observations) {
-        if (item.roles.pose_laser || item.roles.odometry) {
-          for_icp.push_back(item.obs);
-        }
-      }
-      if (!for_icp.empty() || step.action) {
-        tracker_->processFrame(step.action, for_icp);
-      }
+      processFrame(step);
       return;
     }
     for (const auto& item : step.observations) {
-      if (item.roles.odometry || item.roles.pose_laser) {
-        tracker_->processObservation(item.obs, item.roles.odometry);
+      if (item.roles.odometry) {
+        processOdometry(item.obs);
+      } else if (item.roles.pose_laser) {
+        tracker_->processObservation(item.obs, false);
       }
     }
   } catch (const Error&) {

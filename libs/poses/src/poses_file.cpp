@@ -1,5 +1,8 @@
 #include "pmap/poses/poses_file.h"
 
+#include <mrpt/math/CQuaternion.h>
+#include <mrpt/poses/CPose3D.h>
+
 #include <cinttypes>
 #include <cstdio>
 #include <fstream>
@@ -60,6 +63,20 @@ void writePosesFile(const std::filesystem::path& path, const Trajectory& traject
     for (const auto& p : trajectory.poses()) {
       std::snprintf(buf, sizeof buf, "%.6f %.6f %.6f %.6f %.8f %.8f %.8f\n", p.t, p.pose.x,
                     p.pose.y, p.pose.z, p.pose.yaw, p.pose.pitch, p.pose.roll);
+      out << buf;
+    }
+  });
+}
+
+void writeTumFile(const std::filesystem::path& path, const Trajectory& trajectory) {
+  writeFileAtomically(path, [&](std::ostream& out) {
+    out << "# timestamp tx ty tz qx qy qz qw (TUM format: s, m, unit quaternion)\n";
+    char buf[256];
+    for (const auto& p : trajectory.poses()) {
+      mrpt::math::CQuaternionDouble q;
+      mrpt::poses::CPose3D(p.pose).getAsQuaternion(q);
+      std::snprintf(buf, sizeof buf, "%.6f %.6f %.6f %.6f %.9f %.9f %.9f %.9f\n", p.t, p.pose.x,
+                    p.pose.y, p.pose.z, q.x(), q.y(), q.z(), q.r());
       out << buf;
     }
   });

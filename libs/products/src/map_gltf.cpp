@@ -17,6 +17,8 @@ namespace {
 constexpr std::uint32_t kQuadIndices[6] = {0, 1, 2, 0, 2, 3};
 constexpr int kVec3Bytes = 3 * sizeof(float);      // also the byteStride of VEC3 views
 constexpr double kSqrtHalf = 0.70710678118654752;  // sin(45 deg) = cos(45 deg)
+constexpr int kLineStrip = 3;                      // primitive.mode
+const Eigen::Vector3d kPathColour(0.9, 0.3, 0.1);  // sRGB
 
 /// sRGB-encoded value in [0, 1] to linear (IEC 61966-2-1).
 float srgbToLinear(double c) {
@@ -91,6 +93,9 @@ class MapGltfEncoder {
     if (!model_.fine.triangles.empty()) {
       children.push_back(fineNode(s.indices.size() - std::size(kQuadIndices)));
     }
+    if (model_.path.size() >= 2) {
+      children.push_back(pathNode());
+    }
     // -90 degrees about x as (x, y, z, w): world z -> glTF y, world y -> -z.
     nlohmann::json root = {{"name", "map"}, {"rotation", {-kSqrtHalf, 0.0, 0.0, kSqrtHalf}}};
     if (!children.empty()) {
@@ -117,10 +122,36 @@ class MapGltfEncoder {
       material = colourMaterial(q.color, false);
     }
     const std::string name = q.surface_id >= 0 ? surfaceName(q) : "quad_" + std::to_string(i);
-    return addMeshNode(name, {{"attributes", std::move(attributes)},
-                              {"indices", quadIndexAccessor()},
-                              {"material", material},
-                              {"mode", 4}});
+    return addMeshNode(name,
+                       {{"attributes", std::move(attributes)},
+                        {"indices", quadIndexAccessor()},
+                        {"material", material},
+                        {"mode", 4}},
+                       quadExtras(q));
+  }
+
+  /// What viewers show of a rectangle (viewer.html's inspector).
+  nlohmann::json quadExtras(const TexturedQuad& q) const {
+    nlohmann::json extras = {{"surface_id", q.surface_id}, {"tile", q.tile}};
+    const auto support = model_.support.find(q.surface_id);
+    if (q.surface_id >= 0 && support != model_.support.end()) {
+      extras["support"] = support->second;
+    }
+    return extras;
+  }
+
+  /// The robot path as one line strip "robot_path" (its own buffer view).
+  int pathNode() {
+    std::vector<float> xyz;
+    for (const Eigen::Vector3d& p : model_.path) {
+      appendVec3(xyz, p);
+    }
+    const int view = gltf_.addBufferView(xyz, GltfBuilder::kArrayBuffer);
+    const nlohmann::json attributes = {
+        {"POSITION", gltf_.addFloatAccessor(view, 0, model_.path.size(), 3, true)}};
+    return addMeshNode("robot_path", {{"attributes", attributes},
+                                      {"material", colourMaterial(kPathColour, false)},
+                                      {"mode", kLineStrip}});
   }
 
   int fineNode(std::size_t index_count) {
@@ -143,9 +174,14 @@ class MapGltfEncoder {
                                           {"mode", 4}});
   }
 
-  int addMeshNode(const std::string& name, nlohmann::json primitive) {
+  int addMeshNode(const std::string& name, nlohmann::json primitive,
+                  nlohmann::json extras = nullptr) {
     const int mesh = gltf_.add("meshes", {{"name", name}, {"primitives", {std::move(primitive)}}});
-    return gltf_.add("nodes", {{"name", name}, {"mesh", mesh}});
+    nlohmann::json node = {{"name", name}, {"mesh", mesh}};
+    if (!extras.is_null()) {
+      node["extras"] = std::move(extras);
+    }
+    return gltf_.add("nodes", std::move(node));
   }
 
   int quadIndexAccessor() {

@@ -44,6 +44,7 @@ MapModel buildMapModel(const em::PlanarMap& map, const std::vector<Eigen::Vector
     }
     q.color = colourOf(q.normal);
     m.quads.push_back(q);
+    m.support[s.id] = s.support;
   }
   for (const em::Triangle& t : map.fine_triangles) {
     const auto base = static_cast<std::uint32_t>(m.fine.vertices.size());
@@ -54,6 +55,22 @@ MapModel buildMapModel(const em::PlanarMap& map, const std::vector<Eigen::Vector
   }
   m.path = path;
   return m;
+}
+
+Eigen::AlignedBox3d boundingBox(const MapModel& model) {
+  Eigen::AlignedBox3d box;
+  for (const auto& q : model.quads) {
+    for (const auto& c : q.corners) {
+      box.extend(c);
+    }
+  }
+  for (const auto& v : model.fine.vertices) {
+    box.extend(v);
+  }
+  for (const auto& p : model.path) {
+    box.extend(p);
+  }
+  return box;
 }
 
 }  // namespace pmap::products

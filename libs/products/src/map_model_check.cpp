@@ -78,6 +78,11 @@ void checkMapModel(const MapModel& model) {
     checkQuad(model.quads[i], i, ids);
   }
   checkFine(model.fine);
+  for (const Eigen::Vector3d& p : model.path) {
+    if (!p.allFinite()) {
+      fail("path: non-finite position");
+    }
+  }
 }
 
 }  // namespace pmap::products

@@ -64,10 +64,11 @@ Projected project(const std::vector<Eigen::Vector3d>& points, const em::Rectangl
 // door's frame, or NaN. Beside the edge's middle, the door's and the wall's
 // points along the axis are separated by a threshold that misplaces about
 // the fewest of them (door points beyond it, wall points before it; within
-// 2 % of them); the edge is halfway across the widest such gap. Where nothing crosses (the door's
-// last scan, then the wall's first) that is the midpoint of the two; where the reveal's points mix
-// at the edge (the lintel's underside, shared by the door and the wall within noise) it is the
-// middle of the mix, not its end.
+// 2 % of them); the edge is halfway across the widest such gap. Where
+// nothing crosses (the door's last scan, then the wall's first) that is the
+// midpoint of the two; where the reveal's points mix at the edge (the
+// lintel's underside, shared by the door and the wall within noise) it is
+// the middle of the mix, not its end.
 double openingEdge(const Projected& p, int axis, int sign, double half_along, double half_across,
                    double reach) {
   const int across = 1 - axis;

@@ -38,12 +38,15 @@ const RowSpec kRows[] = {
     {"pose stage per scan, p50", "/pose_per_scan_ms/p50", "ms"},
     {"pose stage per scan, p99", "/pose_per_scan_ms/p99", "ms"},
     {"recorded duration", "/duration_s", "s"},
-    {"time: total", "/timing_s/total", "s"},
+    {"time: total (the stages below)", "/timing_s/total", "s"},
     {"time: read", "/timing_s/read", "s"},
     {"time: poses", "/timing_s/pose", "s"},
     {"time: map", "/timing_s/map", "s"},
     {"time: EM", "/timing_s/em", "s"},
+    {"time: refinement", "/timing_s/refine", "s"},
+    {"time: textures", "/timing_s/texture", "s"},
     {"time: write", "/timing_s/write", "s"},
+    {"time: other (set-up, configuration)", "/timing_s/other", "s"},
     {"realtime factor", "/realtime_factor", ""},
 };
 

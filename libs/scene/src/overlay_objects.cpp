@@ -16,24 +16,6 @@ namespace {
 /// depth buffer to keep it under a floor seen from afar.
 constexpr double kGridBelowM = 0.05;
 
-/// Axis-aligned box of everything drawn for the map (corners, fine
-/// vertices, path); empty() when there is nothing.
-Eigen::AlignedBox3d mapBox(const products::MapModel& model) {
-  Eigen::AlignedBox3d box;
-  for (const auto& q : model.quads) {
-    for (const auto& c : q.corners) {
-      box.extend(c);
-    }
-  }
-  for (const auto& v : model.fine.vertices) {
-    box.extend(v);
-  }
-  for (const auto& p : model.path) {
-    box.extend(p);
-  }
-  return box;
-}
-
 }  // namespace
 
 mrpt::opengl::CRenderizable::Ptr pathObject(const std::vector<Eigen::Vector3d>& path,
@@ -77,10 +59,17 @@ mrpt::opengl::CRenderizable::Ptr pointsObject(const std::vector<Eigen::Vector3d>
 
 mrpt::opengl::CRenderizable::Ptr gridObject(const products::MapModel& model,
                                             const SceneOptions& options) {
-  const double step = options.grid_spacing_m;
-  Eigen::AlignedBox3d box = mapBox(model);
+  Eigen::AlignedBox3d box = products::boundingBox(model);
   if (box.isEmpty()) {
     box = Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
+  }
+  // At most kMaxGridLines lines per axis: the spacing grows by tens with
+  // the map's extent (MRPT builds one vertex pair per line).
+  constexpr double kMaxGridLines = 1000.0;
+  const double extent = std::max(box.max().x() - box.min().x(), box.max().y() - box.min().y());
+  double step = options.grid_spacing_m;
+  while (std::isfinite(extent) && extent / step > kMaxGridLines) {
+    step *= 10.0;
   }
   const auto lower = [step](double v) { return step * std::floor(v / step); };
   const auto upper = [step](double v) { return step * (std::floor(v / step) + 1.0); };

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "pmap/common/error.h"
+#include "pmap/common/interrupt.h"
 #include "pmap/common/text.h"
 #include "pmap/config/command_line.h"
 
@@ -14,8 +15,10 @@ constexpr const char* kDescription =
     "and two side cameras driving through a synthetic building described by a world file "
     "(config/worlds/*.json). Writes PREFIX.rawlog (MRPT rawlog, gzip), PREFIX_Images/ (camera "
     "JPEGs referenced by the rawlog, poster PNGs), PREFIX.gt.json (exact ground truth, "
-    "doc/ground-truth.md) and PREFIX.poses.txt (true poses). Exit codes: 0 ok, 1 usage or "
-    "configuration error, 2 input error, 4 output error.";
+    "doc/ground-truth.md) and PREFIX.poses.txt (true poses); the four replace an earlier set "
+    "together or not at all. Exit codes: 0 ok, 1 usage or configuration error, 2 input error, "
+    "4 output error; SIGINT/SIGTERM/SIGHUP remove the temporary files, keep the earlier set "
+    "and end the process by that signal (shell status 130/143/129).";
 
 double parseNumberArg(const std::string& name, const std::string& text) {
   const std::optional<double> v = parseDouble(text);
@@ -92,8 +95,12 @@ bool IndoorSimApp::initialize(int argc, const char* const* argv) {
 }
 
 SimulationSummary IndoorSimApp::run() {
-  Simulator simulator(options_);
-  const SimulationSummary s = simulator.run();
+  Simulator simulator(options_);  // before the guard: nothing written yet, a signal may kill
+  SimulationSummary s;
+  {
+    InterruptGuard guard;
+    s = simulator.run();
+  }
   std::cerr << "indoor-sim: " << simulator.world().name << ": " << s.cycles << " cycles ("
             << s.duration_s << " s of " << s.path_length_m << " m path), " << s.structure_scans
             << " structure scans, " << s.images << " images, " << s.surfaces << " surfaces -> "

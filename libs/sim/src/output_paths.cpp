@@ -1,8 +1,5 @@
 #include "pmap/sim/output_paths.h"
 
-#include <unistd.h>
-
-#include "pmap/common/atomic_file.h"
 #include "pmap/common/error.h"
 
 namespace pmap::sim {
@@ -21,54 +18,19 @@ OutputPaths OutputPaths::fromPrefix(const std::string& prefix_in) {
   OutputPaths p;
   p.rawlog = prefix + ".rawlog";
   p.images_dir = prefix + "_Images";
-  p.images_tmp_dir = prefix + "_Images.tmp-" + std::to_string(::getpid());
   p.gt_json = prefix + ".gt.json";
   p.poses_txt = prefix + ".poses.txt";
   p.images_dir_name = p.images_dir.filename().string();
   return p;
 }
 
-ImagesDirTransaction::ImagesDirTransaction(const OutputPaths& paths) : paths_(paths) {
-  const fs::path parent = paths.rawlog.parent_path();
-  ensureWritableDirectory(parent.empty() ? fs::path(".") : parent);
-  std::error_code ec;
-  fs::remove_all(paths.images_tmp_dir, ec);
-  ensureWritableDirectory(paths.images_tmp_dir);
-  if (fs::exists(paths.images_dir, ec) && !fs::is_directory(paths.images_dir, ec)) {
-    throw OutputError(paths.images_dir.string() + ": exists and is not a directory");
-  }
-}
-
-ImagesDirTransaction::~ImagesDirTransaction() {
-  if (!committed_) {
-    std::error_code ec;
-    fs::remove_all(paths_.images_tmp_dir, ec);
-  }
-}
-
-void ImagesDirTransaction::commit() {
-  std::error_code ec;
-  const fs::path old = paths_.images_dir.string() + ".old-" + std::to_string(::getpid());
-  const bool had_old = fs::exists(paths_.images_dir, ec);
-  if (had_old) {
-    fs::rename(paths_.images_dir, old, ec);
-    if (ec) {
-      throw OutputError(paths_.images_dir.string() + ": cannot replace: " + ec.message());
-    }
-  }
-  fs::rename(paths_.images_tmp_dir, paths_.images_dir, ec);
-  if (ec) {
-    std::error_code ignored;
-    if (had_old) {
-      fs::rename(old, paths_.images_dir, ignored);
-    }
-    throw OutputError(paths_.images_dir.string() +
-                      ": cannot move images into place: " + ec.message());
-  }
-  committed_ = true;
-  if (had_old) {
-    fs::remove_all(old, ec);
-  }
+OutputPaths OutputPaths::stageIn(OutputSet& set) const {
+  OutputPaths staged = *this;
+  staged.images_dir = set.add(images_dir, OutputSet::Kind::kDirectory);
+  staged.gt_json = set.add(gt_json, OutputSet::Kind::kFile);
+  staged.poses_txt = set.add(poses_txt, OutputSet::Kind::kFile);
+  staged.rawlog = set.add(rawlog, OutputSet::Kind::kFile);
+  return staged;
 }
 
 }  // namespace pmap::sim

@@ -1,7 +1,5 @@
 #include "pmap/sim/rawlog_writer.h"
 
-#include <unistd.h>
-
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
@@ -28,28 +26,24 @@ const char* rawlogFormatName(RawlogFormat format) {
   return format == RawlogFormat::kObservations ? "obs" : "sf";
 }
 
-RawlogWriter::RawlogWriter(const std::filesystem::path& final_path, RawlogFormat format)
-    : final_path_(final_path),
-      tmp_path_(final_path.string() + ".tmp-" + std::to_string(::getpid())),
-      format_(format),
-      stream_(std::make_unique<Stream>()) {
+RawlogWriter::RawlogWriter(const std::filesystem::path& path, RawlogFormat format)
+    : path_(path), format_(format), stream_(std::make_unique<Stream>()) {
   bool ok = false;
   try {
-    ok = stream_->file.open(tmp_path_.string(), 1);
+    ok = stream_->file.open(path_.string(), 1);
   } catch (const std::exception&) {
     ok = false;
   }
   if (!ok) {
-    throw OutputError(final_path_.string() + ": cannot create the rawlog (temporary file " +
-                      tmp_path_.string() + ")");
+    throw OutputError(path_.string() + ": cannot create the rawlog");
   }
 }
 
 RawlogWriter::~RawlogWriter() {
-  if (!committed_) {
+  if (!finished_) {
     stream_.reset();
     std::error_code ec;
-    std::filesystem::remove(tmp_path_, ec);
+    std::filesystem::remove(path_, ec);
   }
 }
 
@@ -72,19 +66,13 @@ void RawlogWriter::write(const CycleRecord& cycle) {
       objects_ += 2;
     }
   } catch (const std::exception& e) {
-    throw OutputError(final_path_.string() + ": write failed: " + e.what());
+    throw OutputError(path_.string() + ": write failed: " + e.what());
   }
 }
 
-void RawlogWriter::commit() {
+void RawlogWriter::finish() {
   stream_->file.close();
-  std::error_code ec;
-  std::filesystem::rename(tmp_path_, final_path_, ec);
-  if (ec) {
-    throw OutputError(final_path_.string() +
-                      ": cannot rename the temporary rawlog into place: " + ec.message());
-  }
-  committed_ = true;
+  finished_ = true;
 }
 
 }  // namespace pmap::sim

@@ -5,6 +5,8 @@
 #include <utility>
 
 #include "pmap/common/error.h"
+#include "pmap/common/interrupt.h"
+#include "pmap/common/output_set.h"
 #include "pmap/common/progress.h"
 #include "pmap/sim/camera_rig.h"
 #include "pmap/sim/ground_truth.h"
@@ -189,29 +191,31 @@ std::size_t Simulator::cycleCount() const {
 SimulationSummary Simulator::run() {
   SimulationSummary summary;
   summary.paths = OutputPaths::fromPrefix(options_.out_prefix);
-  const OutputPaths& paths = summary.paths;
-  ImagesDirTransaction images_dir(paths);
-  const std::vector<cv::Mat> posters =
-      writePosterImages(world_, options_.seed, paths.images_tmp_dir);
+  OutputSet outputs;  // removes every temporary if anything below throws
+  const OutputPaths staged = summary.paths.stageIn(outputs);
+  throwIfInterrupted();
+  const std::vector<cv::Mat> posters = writePosterImages(world_, options_.seed, staged.images_dir);
   std::unique_ptr<CameraRig> rig;
   if (world_.sensors.cameras.enabled) {
-    rig = std::make_unique<CameraRig>(world_, posters, options_.seed, paths.images_tmp_dir);
+    rig = std::make_unique<CameraRig>(world_, posters, options_.seed, staged.images_dir);
   }
-  RawlogWriter writer(paths.rawlog, options_.format);
+  RawlogWriter writer(staged.rawlog, options_.format);
   GroundTruthRecorder gt;
   CycleRunner runner(world_, *trajectory_, *caster_, options_, rig.get());
   const std::size_t n = cycleCount();
   ProgressLine progress("indoor-sim", options_.progress);
   for (std::size_t k = 0; k < n; ++k) {
+    throwIfInterrupted();
     writer.write(runner.run(k, gt));
     progress.update(k + 1, n, std::to_string(runner.images()) + " images");
   }
   progress.finish(std::to_string(n) + " cycles, " + std::to_string(runner.images()) + " images");
 
-  const GroundTruthMeta meta = makeMeta(world_, options_, *trajectory_, runner, paths, n);
-  images_dir.commit();
-  gt.write(paths.gt_json, paths.poses_txt, world_, meta);
-  writer.commit();
+  const GroundTruthMeta meta = makeMeta(world_, options_, *trajectory_, runner, staged, n);
+  writer.finish();
+  gt.write(staged.gt_json, staged.poses_txt, world_, meta);
+  throwIfInterrupted();  // the last chance: from here on the run completes
+  outputs.commit();
 
   summary.cycles = n;
   summary.structure_scans = gt.structureScanCount();

@@ -17,9 +17,15 @@ products::TexturedQuad TextureTile::quad() const {
 
 namespace {
 
-int texels(double length_m, double pixels_per_m) {
-  return std::max(1, static_cast<int>(std::ceil(length_m * pixels_per_m - 1e-9)));
+// Texels along a length, as a double: a quad kilometres long (bad poses)
+// must not overflow an int here.
+double texels(double length_m, double pixels_per_m) {
+  return std::max(1.0, std::ceil(length_m * pixels_per_m - 1e-9));
 }
+
+// Tiles of one quad, at most: a longer quad (only absurd geometry makes one)
+// gets a coarser texture instead of millions of tiles.
+constexpr double kMaxTilesPerQuad = 4096.0;
 
 // Cuts one quad into pieces along u and v of at most max_side texels.
 void cutQuad(const products::TexturedQuad& q, double ppm, int max_side,
@@ -31,8 +37,15 @@ void cutQuad(const products::TexturedQuad& q, double ppm, int max_side,
   if (!(lu > 0) || !(lv > 0)) {
     return;
   }
-  const int nu = (texels(lu, ppm) + max_side - 1) / max_side;
-  const int nv = (texels(lv, ppm) + max_side - 1) / max_side;
+  double tiles_u = std::ceil(texels(lu, ppm) / max_side);
+  double tiles_v = std::ceil(texels(lv, ppm) / max_side);
+  while (tiles_u * tiles_v > kMaxTilesPerQuad) {
+    ppm *= 0.5;
+    tiles_u = std::ceil(texels(lu, ppm) / max_side);
+    tiles_v = std::ceil(texels(lv, ppm) / max_side);
+  }
+  const int nu = static_cast<int>(tiles_u);
+  const int nv = static_cast<int>(tiles_v);
   for (int j = 0; j < nv; ++j) {
     for (int i = 0; i < nu; ++i) {
       TextureTile t;
@@ -45,8 +58,8 @@ void cutQuad(const products::TexturedQuad& q, double ppm, int max_side,
       t.length_u = lu / nu;
       t.length_v = lv / nv;
       t.origin = q.corners[0] + (i * t.length_u) * t.u + (j * t.length_v) * t.v;
-      t.width = std::min(max_side, texels(t.length_u, ppm));
-      t.height = std::min(max_side, texels(t.length_v, ppm));
+      t.width = static_cast<int>(std::min<double>(max_side, texels(t.length_u, ppm)));
+      t.height = static_cast<int>(std::min<double>(max_side, texels(t.length_v, ppm)));
       out.push_back(t);
     }
   }

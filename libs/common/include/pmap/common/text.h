@@ -37,6 +37,13 @@ std::string nearestWord(std::string_view word, const std::vector<std::string>& c
 /// Message; others their first non-empty line. At most 240 characters.
 std::string oneLineError(std::string_view what);
 
+/// Lines joined with '\n' (several errors in one exception, one a line:
+/// the apps print each as its own "<app>: error: ..." line).
+std::string joinLines(const std::vector<std::string>& lines);
+
+/// The non-empty lines of `text`.
+std::vector<std::string> splitLines(std::string_view text);
+
 /// `text` made safe inside an HTML element's content or attribute (& < > " ').
 std::string escapeHtml(std::string_view text);
 

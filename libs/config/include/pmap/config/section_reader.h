@@ -44,15 +44,16 @@ class SectionReader {
   /// Throws ConfigError "<file:line>: [section] key = value: <rule>".
   [[noreturn]] void fail(const std::string& key, const std::string& rule) const;
 
-  /// Throws ConfigError for the first key of the section that no read() asked
-  /// for: "<file:line>: [section] unknown key 'sigam_m' (did you mean 'sigma_m'?)".
+  /// Throws one ConfigError listing (a line each) every value read() could
+  /// not parse and every key of the section that no read() asked for:
+  /// "<file:line>: [section] unknown key 'sigam_m' (did you mean 'sigma_m'?)".
+  /// A value that did not parse leaves the default in place until then.
   void finish() const;
 
  private:
   const IniValue* lookup(const std::string& key);
   void record(const std::string& key, const std::string& value, bool from_default);
-  [[noreturn]] void parseError(const std::string& key, const IniValue& v,
-                               const std::string& what) const;
+  void parseError(const std::string& key, const IniValue& v, const std::string& what);
 
   const IniDocument& doc_;
   std::string section_;
@@ -60,6 +61,7 @@ class SectionReader {
   bool present_ = false;
   std::vector<std::string> known_keys_;
   std::map<std::string, std::string> recorded_;  ///< key -> effective value text
+  std::vector<std::string> errors_;              ///< values that did not parse
 };
 
 /// Loads an options struct: calls `opts.load(reader)`, `reader.finish()`,

@@ -11,7 +11,9 @@
 //    true/false) reach MRPT as 1/0 (MRPT itself reads "on" as false);
 //  - after the loaders ran, checkAllRead() reports any key present in an
 //    owned section that no loader read (nearest read key suggested), and any
-//    non-empty owned section that no loader read at all.
+//    non-empty owned section that no loader read at all; keys that only
+//    MRPT's applications read (rawlog_file, SHOW_*, ...: isMrptAppKey) are
+//    accepted and returned, so that an icp-slam ini can be reused.
 // The document is read-only: clear() only drops values written through this
 // object.
 #pragma once
@@ -29,6 +31,10 @@
 
 namespace pmap::config {
 
+/// True for keys that MRPT's applications (icp-slam) read themselves and no
+/// MRPT option loader does: rawlog_file, logOutput_dir, SHOW_*, ...
+bool isMrptAppKey(const std::string& key);
+
 class StrictMrptConfig : public mrpt::config::CConfigFileBase {
  public:
   /// `owned` lists section names; an entry ending in '*' is a prefix
@@ -39,9 +45,10 @@ class StrictMrptConfig : public mrpt::config::CConfigFileBase {
   /// Throws ConfigError if `section` is absent from the document.
   void requireSection(const std::string& section) const;
 
-  /// Throws ConfigError for the first problem found: a value that did not
-  /// parse as its expected type, or a key nobody read.
-  void checkAllRead() const;
+  /// Throws one ConfigError listing every problem (a line each): values that
+  /// did not parse as their expected type, keys nobody read. Returns the
+  /// MRPT application keys it accepted ("[section] key"), for one warning.
+  std::vector<std::string> checkAllRead() const;
 
   /// For a catch block around an MRPT loader (MRPT's read_enum throws on an
   /// unknown name, without file or line): throws the first recorded read

@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -59,8 +60,14 @@ class OfflineEm {
   EmResult run(const std::vector<Eigen::Vector3d>& points, const Neighbours& neighbours,
                const std::vector<std::int32_t>& rows, std::vector<Surface> initial = {}) const;
 
+  /// Called after every iteration's E-step (progress lines); no effect on the map.
+  void setObserver(std::function<void(const IterationRecord&)> observer) {
+    observer_ = std::move(observer);
+  }
+
  private:
   PlanarEmOptions options_;
+  std::function<void(const IterationRecord&)> observer_;
 };
 
 /// The final assignment, explained fraction and fine triangles of `surfaces`.

@@ -1,10 +1,14 @@
-// A hashed uniform grid over fixed points, for radius queries.
+// A hashed uniform grid over fixed points, for radius queries. Only occupied
+// cells are stored (64-bit keys, cell_key.h): memory follows the points
+// whatever their extent.
 #pragma once
 
 #include <Eigen/Core>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
+
+#include "pmap/em/cell_key.h"
 
 namespace pmap::em {
 
@@ -19,10 +23,12 @@ class PointGrid {
   std::vector<std::int32_t> inBox(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) const;
 
   double cell() const { return cell_; }
+  /// Number of occupied cells (at most the number of points).
+  std::size_t occupiedCells() const { return cells_.size(); }
 
  private:
-  std::int64_t key(std::int64_t x, std::int64_t y, std::int64_t z) const;
-  Eigen::Vector3i cellOf(const Eigen::Vector3d& p) const;
+  using Cell = Eigen::Matrix<std::int64_t, 3, 1>;
+  Cell cellOf(const Eigen::Vector3d& p) const { return em::cellOf(p, cell_); }
 
   const std::vector<Eigen::Vector3d>& points_;
   double cell_;

@@ -22,13 +22,23 @@ struct BaselineOptions {
   bool validate(std::string* why) const;
 };
 
+/// A baseline map for the user to open (an OctoMap tree for octovis), which
+/// map-eval writes beside its evaluation file.
+struct BaselineFile {
+  std::string name;   ///< octomap_5cm.bt, octomap_10cm.bt
+  std::string bytes;  ///< the file (OcTree::writeBinary's content)
+};
+
 /// Adds, where the map directory has the files: `octomap` (scans.csv and
 /// points.ply), `raw_map` (raw.glb), `planar_map` (surfaces.csv and map.glb),
 /// and `baseline_accuracy` (the sampling used). `points` are the directory's
-/// points.ply, `map_to_gt` the pose alignment.
-void addBaselineKeys(const std::filesystem::path& map_dir, const GroundTruth& gt,
-                     const MapPoints& points, const Rigid2D& map_to_gt,
-                     const BaselineOptions& options, nlohmann::json& doc);
+/// points.ply, `map_to_gt` the pose alignment. Returns the OctoMap trees as
+/// .bt files (none without scans.csv); each `octomap` entry names its file
+/// in `bt_file`. Writes nothing.
+std::vector<BaselineFile> addBaselineKeys(const std::filesystem::path& map_dir,
+                                          const GroundTruth& gt, const MapPoints& points,
+                                          const Rigid2D& map_to_gt, const BaselineOptions& options,
+                                          nlohmann::json& doc);
 
 /// A few lines for map-eval's report: each map's mean / p95 error and size.
 std::string baselineReportText(const nlohmann::json& doc);

@@ -4,6 +4,9 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <vector>
+
+#include "pmap/eval/baseline_evaluation.h"
 
 namespace pmap::eval {
 
@@ -15,11 +18,24 @@ struct MapEvalArgs {
   double texture_max_shift_px = 2.0;  ///< poster texture registration search (texels)
 };
 
-/// Computes the evaluation document (throws InputError for unreadable inputs).
+/// A whole evaluation, before anything is written.
+struct MapEvaluation {
+  nlohmann::json doc;                         ///< eval.json
+  std::vector<BaselineFile> files;            ///< to write beside it (octomap_5cm.bt, ...)
+  std::vector<std::filesystem::path> images;  ///< image files read (textures, posters)
+};
+
+/// Reads the inputs and computes everything; writes nothing. Throws
+/// InputError for unreadable or invalid inputs.
+MapEvaluation runEvaluation(const MapEvalArgs& args);
+
+/// The evaluation document alone (runEvaluation(args).doc).
 nlohmann::json evaluateMap(const MapEvalArgs& args);
 
-/// main() of map-eval: parses argv, evaluates, writes --out, prints a short
-/// report; returns the documented exit code (errors: one line on stderr).
+/// main() of map-eval: parses argv, refuses outputs that would replace an
+/// input (exit 4, before any work), evaluates, writes the .bt files and
+/// --out, prints a short report; returns the documented exit code (errors:
+/// one line on stderr).
 int mapEvalMain(int argc, const char* const* argv);
 
 }  // namespace pmap::eval

@@ -17,7 +17,13 @@ struct MapPoints {
   std::vector<int> surface;
 };
 
-/// Reads DIR/points.ply (x y z scan beam surface). Throws InputError.
+/// Throws InputError naming `path` unless it is a regular file (or a link to
+/// one): "PATH: is a directory, not a file", "PATH: not found".
+void requireRegularFile(const std::filesystem::path& path);
+
+/// Reads DIR/points.ply (x y z scan beam surface). x, y, z must be finite;
+/// scan, beam and surface finite integers in int range. Throws InputError
+/// naming the file and the vertex.
 MapPoints readMapPoints(const std::filesystem::path& ply);
 
 /// Reads DIR/poses.txt. Throws InputError.

@@ -40,6 +40,7 @@ struct OctomapResult {
   double insert_s = 0;              ///< wall time of the insertions alone
   std::size_t memory_bytes = 0;     ///< OcTree::memoryUsage() after insertion
   std::size_t file_bytes = 0;       ///< size of the .bt file (OcTree::writeBinary)
+  std::string bt_file;              ///< the .bt file's bytes (octovis opens it)
   std::size_t nodes = 0;            ///< OcTree::size()
   std::size_t leaves = 0;           ///< OcTree::getNumLeafNodes()
   std::size_t occupied_leaves = 0;  ///< leaves with occupancy above the threshold
@@ -52,6 +53,10 @@ struct OctomapResult {
 /// (it turns the tree to maximum likelihood and prunes it first, as that
 /// does), without liboctomap's debug output.
 std::string btFileContent(octomap::OcTree& tree);
+
+/// The .bt file name map-eval writes for a resolution: "octomap_5cm.bt" for
+/// 0.05, "octomap_10cm.bt" for 0.10 ("octomap_2.5cm.bt" for 0.025).
+std::string octomapFileName(double resolution_m);
 
 /// Builds the tree: per scan (in scans.csv order of the points' first
 /// appearance), insertPointCloud(points, origin). Points whose scan has no

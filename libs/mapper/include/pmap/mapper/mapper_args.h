@@ -12,10 +12,11 @@
 namespace pmap::mapper {
 
 struct MapperArgs {
-  std::filesystem::path config;  ///< ini (default: config/default.ini)
-  std::filesystem::path rawlog;  ///< input rawlog (default: the bundled sample)
-  std::filesystem::path cloud;   ///< --cloud FILE.ply instead of a rawlog
-  std::filesystem::path poses;   ///< --poses FILE: given poses instead of ICP
+  std::filesystem::path config;   ///< ini (default: config/default.ini)
+  std::filesystem::path rawlog;   ///< input rawlog (default: the bundled sample)
+  bool rawlog_is_sample = false;  ///< no --rawlog / --cloud: the bundled sample
+  std::filesystem::path cloud;    ///< --cloud FILE.ply instead of a rawlog
+  std::filesystem::path poses;    ///< --poses FILE: given poses instead of ICP
   std::filesystem::path out = "planar-mapper-out";
   /// online: the map is updated after every scan (default); offline: EM over
   /// all measurements at the end; raw: points and the raw map only.
@@ -23,6 +24,7 @@ struct MapperArgs {
   int snapshot_every = 0;      ///< online: write the map every N structure scans
   double playback_rate = 0.0;  ///< feed scans at R x their recorded pace (0: at once)
   bool poses_only = false;
+  bool list_labels = false;  ///< --list-labels: print the rawlog's labels and exit
   bool accept_truncated = false;
   bool quiet = false;        ///< no progress line
   bool no_textures = false;  ///< geometry only

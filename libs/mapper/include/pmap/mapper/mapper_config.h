@@ -14,6 +14,8 @@
 #include "pmap/em/planar_em_options.h"
 #include "pmap/input/sensor_roles.h"
 #include "pmap/points/raw_mesh.h"
+#include "pmap/poses/icp_pose_tracker.h"
+#include "pmap/poses/motion_gate.h"
 #include "pmap/refine/refine_options.h"
 #include "pmap/texture/texture_options.h"
 
@@ -22,6 +24,14 @@ class SectionReader;
 }
 
 namespace pmap::mapper {
+
+/// [Poses]: the pose stage's own keys (MRPT's ICP keys stay in [ICP] and
+/// [MappingApplication]).
+struct PosesSection {
+  poses::MotionLimits motion;  ///< implausible motion (libs/poses motion_gate.h)
+  void load(config::SectionReader& reader);
+  bool validate(std::string* why) const { return motion.validate(why); }
+};
 
 /// [Output]
 struct OutputOptions {
@@ -67,16 +77,27 @@ struct MapperConfig {
   config::IniDocument doc;
   std::shared_ptr<config::EffectiveConfig> effective;
   input::SensorsOptions sensors;
+  poses::MotionLimits motion;
   OutputOptions output;
   PlanarEmSection planar_em;
   em::OnlineEmOptions online_em;
   texture::TextureOptions texture;
   refine::RefineOptions refine;
+  /// Accepted but worth saying (MRPT application keys that were ignored).
+  std::vector<std::string> warnings;
 };
 
-/// Loads and validates the project's sections; rejects sections nobody owns.
-/// MRPT's sections are checked when the pose stage reads them.
+/// Loads and validates the whole file: the project's sections (each may be
+/// left out: its defaults apply) and MRPT's [ICP] / [MappingApplication*]
+/// (read by MRPT's loaders, strictly). Rejects sections nobody owns. Throws
+/// one ConfigError listing every problem of the file, a line each.
 MapperConfig loadMapperConfig(const std::filesystem::path& path);
+
+/// The ICP tracker configured from [ICP] / [MappingApplication*]; every key
+/// there must be read by MRPT's loaders, or be one that only MRPT's
+/// applications read (returned in `app_keys`). Throws ConfigError.
+std::unique_ptr<poses::IcpPoseTracker> makeIcpTracker(const MapperConfig& config,
+                                                      std::vector<std::string>* app_keys = nullptr);
 
 /// MRPT-owned section names (an entry ending in '*' is a prefix).
 const std::vector<std::string>& mrptSections();

@@ -11,10 +11,11 @@
 
 namespace pmap::mapper {
 
-/// Writes poses.txt, scans.csv, points.ply, raw.wrl, summary.json and
-/// effective.ini (only poses.txt, summary.json and effective.ini with
-/// --poses-only). `total_s` is the wall time so far; writing time is added.
+/// Writes poses.txt, poses.tum, scans.csv, points.ply, raw.wrl, summary.json
+/// and effective.ini (only the poses, summary.json and effective.ini with
+/// --poses-only). summary.json's timing_s is read off `clock` (the writing
+/// included, as stage "write").
 void writeOutputs(const MapperConfig& config, const MapperArgs& args, const MappingResult& result,
-                  const MapProducts* products, double elapsed_before_write_s);
+                  const MapProducts* products, StageClock& clock);
 
 }  // namespace pmap::mapper

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "pmap/common/stage_clock.h"
 #include "pmap/em/offline_em.h"
 #include "pmap/input/observation_source.h"
 #include "pmap/input/structure_points.h"
@@ -28,14 +29,6 @@
 
 namespace pmap::mapper {
 
-struct StageTiming {
-  double read_s = 0;    ///< decoding the rawlog
-  double pose_s = 0;    ///< ICP and pose handling
-  double map_s = 0;     ///< extracting, placing and meshing points
-  double em_s = 0;      ///< the EM planar mapper
-  double refine_s = 0;  ///< fusion and the Ceres refinement (doc/refinement.md)
-};
-
 struct MappingResult {
   points::PointMap map;
   poses::Trajectory trajectory;
@@ -43,12 +36,12 @@ struct MappingResult {
   std::string pose_source;  ///< "icp", "file", "identity", "cloud"
   input::InputStats input;
   poses::PoseStats pose_stats;
+  poses::MotionGateStats motion;  ///< odometry / given poses dropped as implausible
   points::PlacementStats placement;
   input::DropCounts dropped;
   std::uint64_t measurements = 0;  ///< all structure measurements seen (beams, pixels)
   double first_time = 0;           ///< recorded span of the selected observations (s)
   double last_time = 0;
-  StageTiming timing;
   std::string truncation;          ///< non-empty: accepted truncation message
   std::optional<em::EmResult> em;  ///< the planar map (modes online and offline)
   /// The refinement of em's map (already applied to it).
@@ -70,10 +63,10 @@ struct MappingResult {
   double duration() const { return last_time > first_time ? last_time - first_time : 0.0; }
 };
 
-/// Runs the pipeline on a rawlog or a PLY cloud, showing progress in `live`
-/// (--gui) when given. Throws ConfigError, InputError (bad data, nothing to
-/// map), ProcessingError.
-MappingResult runPipeline(const MapperConfig& config, const MapperArgs& args,
+/// Runs the pipeline on a rawlog or a PLY cloud, timing its stages on
+/// `clock` and showing progress in `live` (--gui) when given. Throws
+/// ConfigError, InputError (bad data, nothing to map), ProcessingError.
+MappingResult runPipeline(const MapperConfig& config, const MapperArgs& args, StageClock& clock,
                           LiveView* live = nullptr);
 
 /// "Nothing found" (doc/robustness.md): a run that read its input correctly

@@ -25,6 +25,10 @@ struct PoseStats {
   std::size_t odometry_readings = 0;
   std::size_t scans_matched = 0;  ///< pose-laser scans handed to ICP
   std::size_t non_monotonic = 0;  ///< samples refused: timestamp older than the last
+  /// sf-format actions without a timestamp that took their frame's time
+  /// (filled by PoseStage), and those dropped for lack of any time.
+  std::size_t actions_timed_by_frame = 0;
+  std::size_t actions_without_time = 0;
 };
 
 class IcpPoseTracker {

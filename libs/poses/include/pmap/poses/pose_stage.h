@@ -1,24 +1,28 @@
 // Feeds the pose-relevant observations of each input step to the ICP
 // tracker: odometry (readings or sf-format actions) and pose-laser scans,
 // nothing else. With given poses (--poses) the trajectory is fixed and steps
-// are ignored.
+// are ignored. Odometry passes a MotionGate first: physically implausible
+// readings and increments are dropped and counted (motion_gate.h).
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <string>
 
 #include "pmap/input/observation_source.h"
 #include "pmap/poses/icp_pose_tracker.h"
+#include "pmap/poses/motion_gate.h"
 #include "pmap/poses/trajectory.h"
 
 namespace pmap::poses {
 
 class PoseStage {
  public:
-  /// ICP poses.
-  explicit PoseStage(std::unique_ptr<IcpPoseTracker> tracker);
-  /// Given poses.
-  explicit PoseStage(Trajectory given);
+  /// ICP poses; odometry is gated by `limits`.
+  PoseStage(std::unique_ptr<IcpPoseTracker> tracker, MotionLimits limits);
+  /// Given poses, gated by `limits` (no re-anchoring: a given trajectory is
+  /// not an odometry counter).
+  PoseStage(const Trajectory& given, MotionLimits limits);
 
   /// Throws InputError (naming the record) when MRPT rejects an observation.
   void process(const input::InputStep& step, const std::string& file);
@@ -28,11 +32,22 @@ class PoseStage {
   /// (given poses); otherwise the last sample may still be replaced.
   bool fixed() const { return !tracker_; }
   const char* source() const { return tracker_ ? "icp" : "file"; }
-  PoseStats stats() const { return tracker_ ? tracker_->stats() : PoseStats{}; }
+  PoseStats stats() const;
+  /// What the motion gate dropped (odometry, or the given poses).
+  const MotionGate& gate() const { return gate_; }
 
  private:
+  void processFrame(const input::InputStep& step);
+  void processOdometry(const mrpt::obs::CObservation::Ptr& obs);
+  mrpt::obs::CActionCollection::Ptr gatedAction(const mrpt::obs::CActionCollection::Ptr& action,
+                                                double frame_t);
+
   std::unique_ptr<IcpPoseTracker> tracker_;
+  MotionGate gate_;
   Trajectory given_;
+  double last_action_t_ = std::numeric_limits<double>::quiet_NaN();
+  std::size_t actions_timed_by_frame_ = 0;
+  std::size_t actions_without_time_ = 0;
 };
 
 }  // namespace pmap::poses

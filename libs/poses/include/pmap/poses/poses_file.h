@@ -17,4 +17,9 @@ Trajectory readPosesFile(const std::filesystem::path& path);
 /// Writes a poses file atomically (throws OutputError).
 void writePosesFile(const std::filesystem::path& path, const Trajectory& trajectory);
 
+/// Writes the trajectory in the TUM RGB-D benchmark's format, which
+/// trajectory tools (evo, the TUM scripts) read: one pose a line,
+/// "timestamp tx ty tz qx qy qz qw" (s, m, unit quaternion), '#' comments.
+void writeTumFile(const std::filesystem::path& path, const Trajectory& trajectory);
+
 }  // namespace pmap::poses

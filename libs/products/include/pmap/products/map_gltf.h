@@ -15,11 +15,14 @@ namespace pmap::products {
 ///  - one mesh and node per rectangle ("surface_<id>_<tile>"): two triangles
 ///    (c0 c1 c2, c0 c2 c3) with POSITION (min/max), NORMAL and, when its
 ///    texture is embedded, TEXCOORD_0 = (s, 1 - t) of map_model.h's convention;
+///    node extras {"surface_id", "tile", "support" (when the model has it)};
 ///  - a textured rectangle (with `with_textures`) gets a material whose
 ///    baseColorTexture is its PNG, embedded in the BIN chunk (bufferView +
 ///    image/png); otherwise a baseColorFactor of its colour;
 ///  - the fine triangles as one mesh "fine_triangles" (no NORMAL: flat
 ///    normals), with COLOR_0 (float VEC3) when per-vertex colours are given;
+///  - the path (two positions or more) as one mesh "robot_path": a line
+///    strip (mode 3) of POSITION (min/max), coloured;
 ///  - rectangles single-sided (they face the robot, map_model.h), fine
 ///    triangles double-sided; metallic 0, roughness 1; colours taken as
 ///    sRGB and written linear (baseColorFactor and COLOR_0 are linear);

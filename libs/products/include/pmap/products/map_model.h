@@ -12,8 +12,10 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <array>
 #include <cstdint>
+#include <map>
 #include <opencv2/core.hpp>
 #include <string>
 #include <vector>
@@ -46,17 +48,24 @@ struct MapModel {
   ColoredTriangles fine;
   /// Robot path (world positions), for scenes and viewers that draw it.
   std::vector<Eigen::Vector3d> path;
+  /// Points supporting each surface (em::Surface::support), by surface id;
+  /// map.glb gives it to viewers in the rectangles' node extras.
+  std::map<std::int32_t, std::int32_t> support;
 };
 
 /// The planar map as a model: one quad per surface, coloured by orientation
 /// (walls, ceilings and floors, slanted), its normal turned towards the
 /// robot's side (the path position nearest to it) so that viewers culling
 /// back faces show the side the robot saw; fine triangles with their own
-/// vertices (three per triangle), uncoloured; the path.
+/// vertices (three per triangle), uncoloured; the path; each surface's support.
 MapModel buildMapModel(const em::PlanarMap& map, const std::vector<Eigen::Vector3d>& points,
                        const std::vector<Eigen::Vector3d>& path);
 
 /// (s, t) texture coordinates of the four corners, in corner order.
+
+/// Axis-aligned box of everything drawn for the map: rectangle corners, fine
+/// triangle vertices and the path; empty() when there is nothing.
+Eigen::AlignedBox3d boundingBox(const MapModel& model);
 
 inline std::array<Eigen::Vector2f, 4> quadTexCoords() {
   return {Eigen::Vector2f(0, 0), Eigen::Vector2f(1, 0), Eigen::Vector2f(1, 1),

@@ -7,7 +7,8 @@ namespace pmap::products {
 
 /// Checks that `model` can be exported; throws std::invalid_argument naming
 /// the violated rule (a caller bug, not a data outcome):
-///  - every corner, normal, colour and vertex is finite, normals non-zero;
+///  - every corner, normal, colour, vertex and path position is finite,
+///    normals non-zero;
 ///  - (surface_id, tile) is unique among the quads with surface_id >= 0;
 ///  - a textured quad has surface_id >= 0 and tile >= 0 (they name its
 ///    texture file) and a CV_8UC3 (BGR) texture;

@@ -3,7 +3,8 @@
 //   indoor-sim [--world FILE] [--seed N] [--sigma METRES] [--format obs|sf]
 //              [--duration SECONDS] [--no-cameras] [--quiet] --out PREFIX
 // Exit codes: 0 ok, 1 usage or configuration error, 2 input error, 4 output
-// error (pmap::Error::exitCode()).
+// error (pmap::Error::exitCode()); SIGINT, SIGTERM, SIGHUP during the run:
+// pmap::Interrupted (exitCode() 128 + signo) after the temporaries are removed.
 #pragma once
 
 #include <string>
@@ -21,6 +22,8 @@ class IndoorSimApp {
   bool initialize(const std::vector<std::string>& args);  ///< args[0] is the program name
 
   /// Runs the simulation and prints a summary on stderr; throws pmap::Error.
+  /// While the outputs are written, SIGINT / SIGTERM / SIGHUP stop the run
+  /// cleanly (pmap::InterruptGuard): it throws pmap::Interrupted.
   SimulationSummary run();
 
   const SimulatorOptions& options() const { return options_; }

@@ -3,8 +3,9 @@
 //    (odometry as absolute CObservationOdometry);
 //  - sf format: alternating CActionCollection (the odometry increment as
 //    CActionRobotMovement2D) and CSensoryFrame (that cycle's other observations).
-// The file is written to "<path>.tmp-<pid>" and renamed on commit(); a writer
-// destroyed without commit() removes its temporary file.
+// The writer fills the path it is given, normally a temporary name that the
+// caller renames into place (pmap::OutputSet); a writer destroyed without
+// finish() removes its file.
 #pragma once
 
 #include <filesystem>
@@ -35,27 +36,26 @@ struct CycleRecord {
 
 class RawlogWriter {
  public:
-  /// Throws OutputError if the temporary file cannot be created.
-  RawlogWriter(const std::filesystem::path& final_path, RawlogFormat format);
+  /// Throws OutputError if the file cannot be created.
+  RawlogWriter(const std::filesystem::path& path, RawlogFormat format);
   ~RawlogWriter();
   RawlogWriter(const RawlogWriter&) = delete;
   RawlogWriter& operator=(const RawlogWriter&) = delete;
 
   /// Throws OutputError on write failure.
   void write(const CycleRecord& cycle);
-  /// Closes the stream and renames the temporary file into place.
-  void commit();
+  /// Closes the stream; the file is complete.
+  void finish();
 
   std::size_t objectsWritten() const { return objects_; }
 
  private:
   struct Stream;
-  std::filesystem::path final_path_;
-  std::filesystem::path tmp_path_;
+  std::filesystem::path path_;
   RawlogFormat format_;
   std::unique_ptr<Stream> stream_;
   std::size_t objects_ = 0;
-  bool committed_ = false;
+  bool finished_ = false;
 };
 
 }  // namespace pmap::sim

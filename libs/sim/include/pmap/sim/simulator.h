@@ -47,7 +47,11 @@ class Simulator {
   explicit Simulator(SimulatorOptions options);
   ~Simulator();
 
-  /// Writes every output (ConfigError, OutputError).
+  /// Writes the four outputs under temporary names, then replaces the old set
+  /// with them all or nothing (pmap::OutputSet). Polls pmap::throwIfInterrupted()
+  /// before each cycle and before the commit. On any exception (ConfigError,
+  /// OutputError, Interrupted) the previous outputs are untouched and no
+  /// temporary remains.
   SimulationSummary run();
 
   const World& world() const { return world_; }
