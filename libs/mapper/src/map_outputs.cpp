@@ -44,7 +44,7 @@ void writeFramesCsv(const std::filesystem::path& csv, const MapProducts& p) {
 void writeMapFiles(const std::filesystem::path& out, const MapProducts& p, const MappingResult& r,
                    const OutputOptions& options) {
   const products::MapModel& m = p.model;
-  const std::size_t surfaces = r.em->map.surfaces.size();
+  const std::size_t surfaces = r.planar->map.surfaces.size();
   const std::size_t fine = m.fine.triangles.size();
   products::writeMapVrml(out / "map.wrl", m,
                          "planar-mapper map: " + std::to_string(surfaces) + " rectangles (" +
@@ -62,25 +62,26 @@ void writeMapFiles(const std::filesystem::path& out, const MapProducts& p, const
     os.write(reinterpret_cast<const char*>(glb.data()), static_cast<std::streamsize>(glb.size()));
   });
   std::vector<Eigen::Vector3f> points;
-  points.reserve(r.map.size());
-  for (const Eigen::Vector3d& x : r.map.xyz()) {
+  const points::PointMap& map = r.points.map;
+  points.reserve(map.size());
+  for (const Eigen::Vector3d& x : map.xyz()) {
     points.push_back(x.cast<float>());
   }
   const nlohmann::json info = {{"title", "planar-mapper: " + out.filename().string()},
                                {"surfaces", surfaces},
                                {"fine triangles", fine},
-                               {"points", r.map.size()},
+                               {"points", map.size()},
                                {"textured", textured}};
   viewer::writeViewerHtml(out / "viewer.html", glb, points, info);
   scene::SceneOptions scene_options;
-  scene_options.points = options.scene_points ? &r.map.xyz() : nullptr;
+  scene_options.points = options.scene_points ? &map.xyz() : nullptr;
   scene::writeMapScene(out / "map.3Dscene", *scene::buildMapScene(m, scene_options));
 }
 
 std::vector<std::string> writeReportFiles(const std::filesystem::path& out, const MapProducts& p,
                                           const MappingResult& r, const nlohmann::json& summary) {
   std::vector<report::OnlineScanRow> rows;
-  for (const OnlineRecord& rec : r.online) {
+  for (const OnlineRecord& rec : r.planar->online) {
     rows.push_back({rec.scan, rec.em_ms, rec.surfaces});
   }
   return report::writeReport(out, report::ReportInputs{p.model, summary, std::move(rows)}).warnings;

@@ -22,9 +22,9 @@ std::vector<texture::CameraFrame> placeFrames(const MapperConfig& config,
                                               const MappingResult& result,
                                               std::size_t& without_pose) {
   std::vector<texture::CameraFrame> frames;
-  for (const auto& obs : result.images) {
-    const auto pose =
-        result.trajectory.at(mrpt::Clock::toDouble(obs->timestamp), config.sensors.max_pose_gap_s);
+  for (const auto& obs : result.input.images) {
+    const auto pose = result.poses.trajectory.at(mrpt::Clock::toDouble(obs->timestamp),
+                                                 config.sensors.max_pose_gap_s);
     if (!pose) {
       ++without_pose;
       continue;
@@ -40,12 +40,13 @@ MapProducts buildMapProducts(const MapperConfig& config, const MapperArgs& args,
                              const MappingResult& result) {
   const auto t0 = std::chrono::steady_clock::now();
   MapProducts p;
-  p.model = products::buildMapModel(result.em->map, result.map.xyz(), pathOf(result.trajectory));
+  p.model = products::buildMapModel(result.planar->map, result.points.map.xyz(),
+                                    pathOf(result.poses.trajectory));
   if (args.no_textures) {
     p.untextured_reason = "--no-textures";
   } else if (!config.texture.enabled) {
     p.untextured_reason = "[Texture] enabled = false";
-  } else if (result.images.empty()) {
+  } else if (result.input.images.empty()) {
     p.untextured_reason = "no camera images (labels in [Sensors] cameras)";
   } else {
     p.frames = placeFrames(config, result, p.frames_without_pose);

@@ -54,7 +54,8 @@ std::optional<MapperArgs> parseMapperArgs(int argc, const char* const* argv) {
       "", "poses", "use these poses (poses.txt format) instead of ICP", false, "", "FILE", cmd);
   TCLAP::ValueArg<std::string> out("o", "out", "output directory", false, "planar-mapper-out",
                                    "DIR", cmd);
-  std::vector<std::string> modes = {"online", "offline", "raw"};
+  std::vector<std::string> modes = {toString(MapMode::kOnline), toString(MapMode::kOffline),
+                                    toString(MapMode::kRaw)};
   TCLAP::ValuesConstraint<std::string> mode_values(modes);
   TCLAP::ValueArg<std::string> mode(
       "", "mode",
@@ -135,16 +136,16 @@ std::optional<MapperArgs> parseMapperArgs(int argc, const char* const* argv) {
   if (a.list_labels && !a.cloud.empty()) {
     throw ConfigError("usage: --list-labels reads a rawlog, not a --cloud");
   }
-  a.mode = mode.getValue();
+  a.mode = *parseMapMode(mode.getValue());  // TCLAP checked the values
   if (snapshot.getValue() < 0 || snapshot.getValue() > 1000000000 ||
       !(playback.getValue() >= 0.0) || !std::isfinite(playback.getValue())) {
     throw ConfigError("usage: --snapshot-every must be >= 0 and --playback-rate a number >= 0");
   }
-  if (snapshot.getValue() > 0 && (a.mode != "online" || poses_only.getValue())) {
+  if (snapshot.getValue() > 0 && (a.mode != MapMode::kOnline || poses_only.getValue())) {
     throw ConfigError(
         "usage: --snapshot-every writes the online map while it grows: it needs "
         "--mode online (the default), not --mode " +
-        (poses_only.getValue() ? std::string("with --poses-only") : a.mode));
+        (poses_only.getValue() ? std::string("with --poses-only") : toString(a.mode)));
   }
   a.snapshot_every = static_cast<int>(snapshot.getValue());
   a.playback_rate = playback.getValue();

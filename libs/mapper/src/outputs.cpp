@@ -22,21 +22,22 @@ using nlohmann::json;
 
 namespace {
 
-json inputSummary(const MapperArgs& args, const MappingResult& r) {
+json inputSummary(const MapperArgs& args, const InputResult& r) {
+  const input::InputStats& st = r.stats;
   json in;
   in["file"] = args.cloud.empty() ? args.rawlog.string() : args.cloud.string();
-  in["format"] = args.cloud.empty() ? input::toString(r.input.format) : "ply";
-  in["records"] = r.input.records;
-  in["observations"] = r.input.observations;
-  in["pose_scans"] = r.input.pose_scans;
-  in["structure_scans"] = r.input.structure_scans;
-  in["odometry"] = r.input.odometry;
-  in["images"] = r.input.images;
-  in["structure_decimated"] = r.input.structure_decimated;
-  in["invalid_timestamps"] = r.input.invalid_timestamps;
-  in["non_finite_poses"] = r.input.non_finite_poses;
-  in["leading_frame_skipped"] = r.input.leading_frame_skipped;
-  in["ignored"] = r.input.ignored;
+  in["format"] = args.cloud.empty() ? input::toString(st.format) : "ply";
+  in["records"] = st.records;
+  in["observations"] = st.observations;
+  in["pose_scans"] = st.pose_scans;
+  in["structure_scans"] = st.structure_scans;
+  in["odometry"] = st.odometry;
+  in["images"] = st.images;
+  in["structure_decimated"] = st.structure_decimated;
+  in["invalid_timestamps"] = st.invalid_timestamps;
+  in["non_finite_poses"] = st.non_finite_poses;
+  in["leading_frame_skipped"] = st.leading_frame_skipped;
+  in["ignored"] = st.ignored;
   in["truncated"] = !r.truncation.empty();
   if (!r.truncation.empty()) {
     in["truncation"] = r.truncation;
@@ -44,9 +45,9 @@ json inputSummary(const MapperArgs& args, const MappingResult& r) {
   return in;
 }
 
-json historyJson(const em::EmResult& em) {
+json historyJson(const std::vector<em::IterationRecord>& history) {
   json h = json::array();
-  for (const em::IterationRecord& rec : em.history) {
+  for (const em::IterationRecord& rec : history) {
     h.push_back({{"iteration", rec.iteration},
                  {"surfaces", rec.surfaces},
                  {"explained_fraction", rec.explained_fraction},
@@ -75,9 +76,9 @@ json percentiles(std::vector<double> v) {
 }
 
 // Online-mode keys: per-scan EM and pose timings (doc/outputs.md).
-void addOnline(const MappingResult& r, json& s) {
+void addOnline(const std::vector<OnlineRecord>& online, json& s) {
   std::vector<double> em_ms;
-  for (const OnlineRecord& rec : r.online) {
+  for (const OnlineRecord& rec : online) {
     em_ms.push_back(rec.em_ms);
   }
   s["em_per_scan_ms"] = percentiles(em_ms);
@@ -92,11 +93,11 @@ void addOnline(const MappingResult& r, json& s) {
   s["em_per_scan_ms_by_decile"] = deciles;
 }
 
-void writeOnlineCsv(const fs::path& path, const MappingResult& r) {
+void writeOnlineCsv(const fs::path& path, const std::vector<OnlineRecord>& online) {
   writeFileAtomically(path, [&](std::ostream& out) {
     out << "scan,em_ms,surfaces,points,new_points,revisited,reassigned,active,added,removed,"
            "fused,split\n";
-    for (const OnlineRecord& rec : r.online) {
+    for (const OnlineRecord& rec : online) {
       const em::OnlineUpdate& u = rec.update;
       out << rec.scan << "," << rec.em_ms << "," << rec.surfaces << "," << rec.points << ","
           << u.new_points << "," << u.revisited << "," << u.reassigned << "," << u.active_surfaces
@@ -139,27 +140,31 @@ json refinementJson(const refine::RefineResult& r, const std::vector<em::Surface
           {"solve_s", r.solve_s}};
 }
 
-void addPlanarMap(const MappingResult& r, json& s) {
-  const em::EmResult& em = *r.em;
-  const std::size_t map_triangles = 2 * em.map.surfaces.size() + em.map.fine_triangles.size();
-  s["surfaces"] = em.map.surfaces.size();
-  s["fine_triangles"] = em.map.fine_triangles.size();
-  s["explained_fraction"] = em.map.explained_fraction;
+void addPlanarMap(const PlanarResult& planar, std::size_t raw_triangles, json& s) {
+  const em::PlanarMap& map = planar.map;
+  const std::size_t map_triangles = 2 * map.surfaces.size() + map.fine_triangles.size();
+  s["surfaces"] = map.surfaces.size();
+  s["fine_triangles"] = map.fine_triangles.size();
+  s["explained_fraction"] = map.explained_fraction;
   s["map_triangles"] = map_triangles;
-  s["compression"] = map_triangles > 0 ? static_cast<double>(r.raw_triangles.size()) /
-                                             static_cast<double>(map_triangles)
-                                       : 0.0;
-  s["iterations"] = em.iterations;
-  s["termination"] = em::toString(em.termination);
-  s["em_message"] = em.message;
+  s["compression"] = map_triangles > 0
+                         ? static_cast<double>(raw_triangles) / static_cast<double>(map_triangles)
+                         : 0.0;
+  // Offline: the EM's iterations and how it ended; online: the scans fed.
+  const int iterations =
+      planar.offline ? planar.offline->iterations : static_cast<int>(planar.online.size());
+  s["iterations"] = iterations;
+  s["termination"] = planar.offline ? em::toString(planar.offline->termination) : "online";
+  s["em_message"] = planar.message;
   s["ms_per_iteration"] =
-      em.iterations > 0 ? 1000.0 * s["timing_s"]["em"].get<double>() / em.iterations : 0.0;
-  s["history"] = historyJson(em);
-  if (!r.online.empty()) {
-    addOnline(r, s);
+      iterations > 0 ? 1000.0 * s["timing_s"]["em"].get<double>() / iterations : 0.0;
+  s["history"] =
+      historyJson(planar.offline ? planar.offline->history : std::vector<em::IterationRecord>{});
+  if (!planar.online.empty()) {
+    addOnline(planar.online, s);
   }
-  if (r.refine) {
-    s["refinement"] = refinementJson(*r.refine, em.map.surfaces);
+  if (planar.refine) {
+    s["refinement"] = refinementJson(*planar.refine, map.surfaces);
   }
 }
 
@@ -177,52 +182,56 @@ json timingJson(const StageClock& clock) {
 }
 
 json summaryJson(const MapperArgs& args, const MappingResult& r, const StageClock& clock) {
+  const PoseResult& poses = r.poses;
+  const PointsResult& points = r.points;
   json s;
   s["timing_s"] = timingJson(clock);
   const json& t = s["timing_s"];
   const double processing_s = t["read"].get<double>() + t["pose"].get<double>() +
                               t["map"].get<double>() + t["em"].get<double>() +
                               t["refine"].get<double>();
-  s["input"] = inputSummary(args, r);
-  s["scans"] = r.placement.placed;
-  s["scans_without_pose"] = r.placement.without_pose;
-  s["measurements"] = r.measurements;
-  s["points"] = r.map.size();
-  s["points_dropped"] = r.dropped.total();
-  s["points_dropped_by_reason"] = {{"invalid", r.dropped.invalid},
-                                   {"non_finite", r.dropped.non_finite},
-                                   {"out_of_range", r.dropped.out_of_range}};
-  s["raw_triangles"] = r.raw_triangles.size();
-  s["poses"] = {{"source", r.pose_source},
-                {"count", r.trajectory.size()},
-                {"scans_matched", r.pose_stats.scans_matched},
-                {"odometry_readings", r.pose_stats.odometry_readings},
-                {"non_monotonic", r.pose_stats.non_monotonic},
-                {"actions_timed_by_frame", r.pose_stats.actions_timed_by_frame},
-                {"actions_without_time", r.pose_stats.actions_without_time},
-                {"implausible_dropped", r.motion.dropped()},
+  s["input"] = inputSummary(args, r.input);
+  s["scans"] = points.placement.placed;
+  s["scans_without_pose"] = points.placement.without_pose;
+  s["measurements"] = r.input.measurements;
+  s["points"] = points.map.size();
+  const input::DropCounts& dropped = r.input.dropped;
+  s["points_dropped"] = dropped.total();
+  s["points_dropped_by_reason"] = {{"invalid", dropped.invalid},
+                                   {"non_finite", dropped.non_finite},
+                                   {"out_of_range", dropped.out_of_range}};
+  s["raw_triangles"] = points.raw_triangles.size();
+  s["poses"] = {{"source", toString(poses.source)},
+                {"count", poses.trajectory.size()},
+                {"scans_matched", poses.stats.scans_matched},
+                {"odometry_readings", poses.stats.odometry_readings},
+                {"non_monotonic", poses.stats.non_monotonic},
+                {"actions_timed_by_frame", poses.stats.actions_timed_by_frame},
+                {"actions_without_time", poses.stats.actions_without_time},
+                {"implausible_dropped", poses.motion.dropped()},
                 {"implausible_by_reason",
-                 {{"non_finite", r.motion.non_finite},
-                  {"beyond_max_coordinate", r.motion.too_far},
-                  {"step_beyond_limits", r.motion.too_fast}}},
-                {"odometry_resets", r.motion.resets}};
-  s["duration_s"] = r.duration();
-  s["mode"] = r.em_mode.empty() ? args.mode : r.em_mode;
+                 {{"non_finite", poses.motion.non_finite},
+                  {"beyond_max_coordinate", poses.motion.too_far},
+                  {"step_beyond_limits", poses.motion.too_fast}}},
+                {"odometry_resets", poses.motion.resets}};
+  s["duration_s"] = r.input.duration();
+  s["mode"] = toString(r.kind);
   s["warnings"] = r.warnings;
-  s["pose_per_scan_ms"] = percentiles(r.pose_step_ms);
-  if (r.em) {
-    addPlanarMap(r, s);
+  s["pose_per_scan_ms"] = percentiles(poses.step_ms);
+  if (r.planar) {
+    addPlanarMap(*r.planar, points.raw_triangles.size(), s);
   }
   // One definition everywhere: recorded duration / wall time of reading,
   // poses and mapping (points, raw map, EM and refinement; textures and
   // writing excluded). A single
   // frame has no duration: no factor (null).
+  const double duration = r.input.duration();
   s["realtime_factor"] =
-      processing_s > 0 && r.duration() > 0 ? json(r.duration() / processing_s) : json(nullptr);
+      processing_s > 0 && duration > 0 ? json(duration / processing_s) : json(nullptr);
   return s;
 }
 
-void writeRawMap(const fs::path& path, const MappingResult& r) {
+void writeRawMap(const fs::path& path, const PointsResult& r) {
   products::VrmlMesh mesh;
   mesh.name = "RawMap";
   mesh.vertices = r.map.xyz();
@@ -236,7 +245,7 @@ void writeRawMap(const fs::path& path, const MappingResult& r) {
 /// raw.glb: the raw map's geometry alone as glTF binary (its triangles as the
 /// fine-triangle mesh, only the vertices they use), the size the baselines
 /// compare (doc/outputs.md).
-void writeRawMapGlb(const fs::path& path, const MappingResult& r) {
+void writeRawMapGlb(const fs::path& path, const PointsResult& r) {
   products::MapModel model;
   std::vector<std::uint32_t> slot(r.map.size(), UINT32_MAX);
   for (const auto& t : r.raw_triangles) {
@@ -264,23 +273,24 @@ void writeOutputs(const MapperConfig& config, const MapperArgs& args, const Mapp
   writeTextFileAtomically(args.out / "effective.ini",
                           config.effective->toIniText({"effective configuration of planar-mapper",
                                                        "source: " + config.doc.origin()}));
-  if (!r.trajectory.empty()) {
-    poses::writePosesFile(args.out / "poses.txt", r.trajectory);
-    poses::writeTumFile(args.out / "poses.tum", r.trajectory);
+  if (!r.poses.trajectory.empty()) {
+    poses::writePosesFile(args.out / "poses.txt", r.poses.trajectory);
+    poses::writeTumFile(args.out / "poses.tum", r.poses.trajectory);
   }
   if (!args.poses_only) {
-    products::writeScansCsv(args.out / "scans.csv", r.map);
-    products::writePointsPly(args.out / "points.ply", r.map,
-                             r.em ? products::surfaceIdsOfPoints(r.em->map) : std::vector<int>{});
+    products::writeScansCsv(args.out / "scans.csv", r.points.map);
+    products::writePointsPly(
+        args.out / "points.ply", r.points.map,
+        r.planar ? products::surfaceIdsOfPoints(r.planar->map) : std::vector<int>{});
     if (config.output.raw_map) {
-      writeRawMap(args.out / "raw.wrl", r);
-      writeRawMapGlb(args.out / "raw.glb", r);
+      writeRawMap(args.out / "raw.wrl", r.points);
+      writeRawMapGlb(args.out / "raw.glb", r.points);
     }
-    if (!r.online.empty()) {
-      writeOnlineCsv(args.out / "online.csv", r);
+    if (r.planar && !r.planar->online.empty()) {
+      writeOnlineCsv(args.out / "online.csv", r.planar->online);
     }
-    if (r.em) {
-      products::writeSurfacesCsv(args.out / "surfaces.csv", r.em->map.surfaces);
+    if (r.planar) {
+      products::writeSurfacesCsv(args.out / "surfaces.csv", r.planar->map.surfaces);
     }
     if (products != nullptr) {
       writeMapFiles(args.out, *products, r, config.output);

@@ -46,22 +46,23 @@ double pathLength(const poses::Trajectory& t) {
 
 void printSummary(const MapperArgs& args, const MappingResult& result) {
   if (args.poses_only) {
-    const auto& last = result.trajectory.poses().back().pose;
+    const poses::Trajectory& trajectory = result.poses.trajectory;
+    const auto& last = trajectory.poses().back().pose;
     std::fprintf(stderr,
                  "planar-mapper: %zu poses (%s), path %.2f m, final pose x %.4f m, y %.4f m, "
                  "yaw %.2f deg -> %s\n",
-                 result.trajectory.size(), result.pose_source.c_str(),
-                 pathLength(result.trajectory), last.x, last.y, last.yaw * 180.0 / M_PI,
-                 args.out.c_str());
+                 trajectory.size(), toString(result.poses.source), pathLength(trajectory), last.x,
+                 last.y, last.yaw * 180.0 / M_PI, args.out.c_str());
     return;
   }
+  const PointsResult& points = result.points;
   std::fprintf(stderr, "planar-mapper: %zu scans, %zu points, %zu raw triangles -> %s\n",
-               result.placement.placed, result.map.size(), result.raw_triangles.size(),
+               points.placement.placed, points.map.size(), points.raw_triangles.size(),
                args.out.c_str());
-  if (result.em) {
+  if (result.planar) {
     std::fprintf(stderr, "planar-mapper: EM %s; explained %.1f %%, %zu fine triangles\n",
-                 result.em->message.c_str(), 100.0 * result.em->map.explained_fraction,
-                 result.em->map.fine_triangles.size());
+                 result.planar->message.c_str(), 100.0 * result.planar->map.explained_fraction,
+                 result.planar->map.fine_triangles.size());
   }
 }
 
@@ -101,13 +102,13 @@ void PlanarMapperApp::run() {
   result.warnings.insert(result.warnings.begin(), config_->warnings.begin(),
                          config_->warnings.end());
   std::optional<MapProducts> products;
-  if (result.em) {
+  if (result.planar) {
     auto in_texture = clock.enter(Stage::kTexture);
     products = buildMapProducts(*config_, *args_, result);
   }
   writeOutputs(*config_, *args_, result, products ? &*products : nullptr, clock);
   if (live) {
-    live->finish(products ? products->model : products::MapModel{}, result.map);
+    live->finish(products ? products->model : products::MapModel{}, result.points.map);
   }
 
   for (const std::string& w : result.warnings) {  // also with --quiet
@@ -115,8 +116,9 @@ void PlanarMapperApp::run() {
   }
   if (!args_->quiet) {
     printSummary(*args_, result);
-    if (!result.truncation.empty()) {
-      std::fprintf(stderr, "planar-mapper: warning: %s (accepted)\n", result.truncation.c_str());
+    if (!result.input.truncation.empty()) {
+      std::fprintf(stderr, "planar-mapper: warning: %s (accepted)\n",
+                   result.input.truncation.c_str());
     }
   }
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "pmap/input/observation_source.h"
+#include "pmap/mapper/mapping_result.h"
 
 namespace pmap::mapper {
 
@@ -18,11 +19,9 @@ struct MapperArgs {
   std::filesystem::path cloud;    ///< --cloud FILE.ply instead of a rawlog
   std::filesystem::path poses;    ///< --poses FILE: given poses instead of ICP
   std::filesystem::path out = "planar-mapper-out";
-  /// online: the map is updated after every scan (default); offline: EM over
-  /// all measurements at the end; raw: points and the raw map only.
-  std::string mode = "online";
-  int snapshot_every = 0;      ///< online: write the map every N structure scans
-  double playback_rate = 0.0;  ///< feed scans at R x their recorded pace (0: at once)
+  MapMode mode = MapMode::kOnline;  ///< --mode
+  int snapshot_every = 0;           ///< online: write the map every N structure scans
+  double playback_rate = 0.0;       ///< feed scans at R x their recorded pace (0: at once)
   bool poses_only = false;
   bool list_labels = false;  ///< --list-labels: print the rawlog's labels and exit
   bool accept_truncated = false;

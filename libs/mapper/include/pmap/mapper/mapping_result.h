@@ -1,0 +1,112 @@
+// What a planar-mapper run produced, stage by stage (input -> poses ->
+// points -> planar map), and the typed modes the run was made in. The
+// strings of the modes exist only at the command line and in summary.json
+// (toString / parse*).
+#pragma once
+
+#include <mrpt/obs/CObservationImage.h>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pmap/em/offline_em.h"
+#include "pmap/input/observation_source.h"
+#include "pmap/input/structure_points.h"
+#include "pmap/mapper/online_stage.h"
+#include "pmap/points/point_map.h"
+#include "pmap/points/scan_placer.h"
+#include "pmap/poses/icp_pose_tracker.h"
+#include "pmap/poses/motion_gate.h"
+#include "pmap/poses/trajectory.h"
+#include "pmap/refine/map_refiner.h"
+
+namespace pmap::mapper {
+
+/// --mode: how the planar map is made.
+enum class MapMode {
+  kOnline,   ///< updated after every structure scan (the default)
+  kOffline,  ///< EM over all measurements at the end
+  kRaw,      ///< points and the raw polygon map only
+};
+
+/// What the run did: the map mode, or less (--poses-only), or the offline EM
+/// where online was asked for an unorganised cloud (no scan order).
+enum class RunKind { kOnline, kOffline, kRaw, kPosesOnly };
+
+/// Where the poses came from.
+enum class PoseSource {
+  kIcp,       ///< MRPT's ICP on odometry and the pose laser
+  kFile,      ///< --poses
+  kIdentity,  ///< a single 3D frame: its own frame is the world
+  kCloud,     ///< --cloud: the cloud's frame
+};
+
+const char* toString(MapMode mode);
+const char* toString(RunKind kind);
+const char* toString(PoseSource source);
+/// "online", "offline", "raw"; nullopt otherwise.
+std::optional<MapMode> parseMapMode(const std::string& text);
+
+/// What was read.
+struct InputResult {
+  input::InputStats stats;
+  input::DropCounts dropped;
+  std::uint64_t measurements = 0;  ///< all structure measurements seen (beams, pixels)
+  double first_time = 0;           ///< recorded span of the selected observations (s)
+  double last_time = 0;
+  std::string truncation;  ///< non-empty: accepted truncation message
+  /// Camera images of the selected records (external images stay on disk;
+  /// embedded ones are held in memory), for the textures.
+  std::vector<mrpt::obs::CObservationImage::Ptr> images;
+  double duration() const { return last_time > first_time ? last_time - first_time : 0.0; }
+};
+
+/// The poses.
+struct PoseResult {
+  PoseSource source = PoseSource::kIcp;
+  poses::Trajectory trajectory;
+  poses::PoseStats stats;
+  poses::MotionGateStats motion;  ///< odometry / given poses dropped as implausible
+  /// Wall time of the pose stage for each input step that carried a
+  /// pose-laser scan (ms).
+  std::vector<double> step_ms;
+};
+
+/// The placed structure points and the raw polygon map.
+struct PointsResult {
+  points::PointMap map;
+  points::PlacementStats placement;
+  std::vector<std::array<std::uint32_t, 3>> raw_triangles;
+};
+
+/// How the offline EM ended (absent for the online EM, which has no end).
+struct OfflineRun {
+  em::Termination termination = em::Termination::kNoPoints;
+  int iterations = 0;
+  std::vector<em::IterationRecord> history;
+};
+
+/// The planar map and how it was made.
+struct PlanarResult {
+  em::PlanarMap map;  ///< after the refinement, when it ran
+  std::string message;
+  std::optional<OfflineRun> offline;           ///< the offline EM's run
+  std::vector<OnlineRecord> online;            ///< the online EM: one record per structure scan
+  std::optional<refine::RefineResult> refine;  ///< the refinement (applied to `map`)
+};
+
+struct MappingResult {
+  RunKind kind = RunKind::kOnline;
+  InputResult input;
+  PoseResult poses;
+  PointsResult points;
+  std::optional<PlanarResult> planar;  ///< kinds online and offline
+  /// Outcomes worth a warning (printed, and listed in summary.json), e.g.
+  /// "nothing found" (doc/robustness.md).
+  std::vector<std::string> warnings;
+};
+
+}  // namespace pmap::mapper

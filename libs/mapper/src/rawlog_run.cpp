@@ -1,0 +1,251 @@
+#include "rawlog_run.h"
+
+#include <mrpt/system/datetime.h>
+
+#include <algorithm>
+#include <chrono>
+
+#include "pmap/common/error.h"
+#include "pmap/common/progress.h"
+#include "pmap/input/label_inventory.h"
+#include "pmap/input/rawlog_reader.h"
+#include "pmap/points/raw_mesh.h"
+#include "pmap/poses/pose_stage.h"
+#include "pmap/poses/poses_file.h"
+
+namespace pmap::mapper {
+namespace {
+
+using Clock = std::chrono::steady_clock;  // per-scan pose timings
+double since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+class RawlogRun {
+ public:
+  RawlogRun(const MapperConfig& config, const MapperArgs& args, MappingResult& result,
+            StageClock& clock, LiveView* live)
+      : config_(config),
+        args_(args),
+        result_(result),
+        clock_(clock),
+        live_(live),
+        online_(args.mode == MapMode::kOnline && !args.poses_only
+                    ? std::make_unique<OnlineStage>(config.planar_em.em, config.online_em, args.out,
+                                                    args.snapshot_every)
+                    : nullptr),
+        mesh_(config.output.raw_mesh),
+        placer_(
+            result.points.map, config.sensors.max_pose_gap_s,
+            [this](const input::StructureScan& s, std::size_t record) { onPlaced(s, record); }) {}
+
+  void run() {
+    checkLabels();
+    poses::PoseStage stage = makePoseStage();
+    result_.poses.source = args_.poses.empty() ? PoseSource::kIcp : PoseSource::kFile;
+    input::RawlogReaderOptions reader_options;
+    reader_options.accept_truncated = args_.accept_truncated;
+    input::RawlogReader reader(args_.rawlog, reader_options);
+    input::ObservationSource source(reader, input::RoleClassifier(config_.sensors),
+                                    args_.selection);
+    ProgressLine progress("planar-mapper: reading", !args_.quiet);
+    Pacer pacer(args_.playback_rate);
+    input::InputStep step;
+    for (;;) {
+      bool more = false;
+      {
+        auto in_read = clock_.enter(Stage::kRead);
+        more = source.next(step);
+      }
+      if (!more) {
+        break;
+      }
+      if (!step.observations.empty()) {
+        pacer.waitFor(mrpt::Clock::toDouble(step.observations.front().obs->timestamp));
+      }
+      processPoses(stage, step);
+      {
+        auto in_map = clock_.enter(Stage::kMap);
+        collect(step);
+        placer_.drain(stage.trajectory(), stage.fixed());
+      }
+      progress.update(reader.compressedPosition(), reader.fileSize(), progressDetail(stage));
+    }
+    {
+      auto in_map = clock_.enter(Stage::kMap);
+      finish(stage, source);
+    }
+    progress.finish(progressDetail(stage));
+    result_.input.truncation = reader.truncationMessage();
+  }
+
+ private:
+  // The pose stage: ICP, or the given poses (checked against the motion
+  // limits like odometry).
+  poses::PoseStage makePoseStage() const {
+    auto tracker = makeIcpTracker(config_);  // validates the ICP sections in every mode
+    if (args_.poses.empty()) {
+      return poses::PoseStage(std::move(tracker), config_.motion);
+    }
+    return poses::PoseStage(poses::readPosesFile(args_.poses), config_.motion);
+  }
+
+  // The roles this run uses must name labels the file has (label_inventory.h).
+  void checkLabels() {
+    input::RolesInUse used;
+    used.pose_laser = used.odometry = args_.poses.empty();
+    used.structure = !args_.poses_only;
+    used.cameras = !args_.poses_only && !args_.no_textures && config_.texture.enabled;
+    const input::LabelInventory inventory =
+        input::scanLabels(args_.rawlog, input::kLabelCheckRecords);
+    for (std::string& w : input::checkRoleLabels(config_.sensors, used, args_.selection.keep_labels,
+                                                 inventory, config_.doc.origin())) {
+      result_.warnings.push_back(std::move(w));
+    }
+  }
+
+  void processPoses(poses::PoseStage& stage, const input::InputStep& step) {
+    const auto t0 = Clock::now();
+    {
+      auto in_poses = clock_.enter(Stage::kPoses);
+      stage.process(step, args_.rawlog.string());
+    }
+    if (carriesPoses(step)) {
+      result_.poses.step_ms.push_back(1000.0 * since(t0));
+    }
+  }
+
+  std::string progressDetail(const poses::PoseStage& stage) const {
+    const std::string poses = std::to_string(stage.trajectory().size()) + " poses";
+    if (args_.poses_only) {
+      return poses;
+    }
+    return poses + ", " + std::to_string(placer_.stats().placed) + " structure scans, " +
+           std::to_string(result_.points.map.size()) + " points";
+  }
+
+  void collect(const input::InputStep& step) {
+    for (const auto& item : step.observations) {
+      const double t = mrpt::Clock::toDouble(item.obs->timestamp);
+      InputResult& in = result_.input;
+      in.first_time = seen_any_ ? std::min(in.first_time, t) : t;
+      in.last_time = seen_any_ ? std::max(in.last_time, t) : t;
+      seen_any_ = true;
+      if (item.roles.camera && !args_.poses_only && !args_.no_textures) {
+        if (auto img = std::dynamic_pointer_cast<mrpt::obs::CObservationImage>(item.obs)) {
+          result_.input.images.push_back(std::move(img));
+        }
+      }
+      if (item.roles.structure && !args_.poses_only) {
+        input::StructureScan scan = input::extractStructureScan(*item.obs, item.structure_index);
+        result_.input.dropped += scan.dropped;
+        result_.input.measurements += scan.measurements();
+        placer_.add(std::move(scan));
+      }
+    }
+  }
+
+  // Steps that carry a pose-laser scan: their pose-stage time is the "pose
+  // per scan" time (ICP and pose handling) of summary.json.
+  static bool carriesPoses(const input::InputStep& step) {
+    return std::any_of(step.observations.begin(), step.observations.end(),
+                       [](const input::ObservationItem& o) { return o.roles.pose_laser; });
+  }
+
+  void onPlaced(const input::StructureScan& scan, std::size_t record) {
+    if (config_.output.raw_map) {
+      mesh_.addScan(result_.points.map, record, scan.rows, scan.cols, scan.organised);
+    }
+    if (online_ && scan.organised) {
+      auto in_em = clock_.enter(Stage::kEm);
+      online_->addScan(result_.points.map, record);
+    } else if (online_) {
+      unorganised_ = true;
+    }
+    if (live_ != nullptr && live_->due()) {
+      const std::optional<em::PlanarMap> planar =
+          online_ && !unorganised_ ? std::optional<em::PlanarMap>(online_->map()) : std::nullopt;
+      live_->update(result_.points.map, record, planar ? &*planar : nullptr);
+    }
+  }
+
+  void finish(poses::PoseStage& stage, const input::ObservationSource& source) {
+    result_.input.stats = source.stats();
+    result_.poses.stats = stage.stats();
+    const auto& in = result_.input.stats;
+    const bool no_pose_source = in.pose_scans == 0 && in.odometry == 0 && args_.poses.empty();
+    if (no_pose_source && placer_.pending() == 1) {
+      result_.poses.source = PoseSource::kIdentity;  // a single 3D frame: its own frame
+      placer_.placeAllAt(mrpt::math::TPose3D());
+    } else if (no_pose_source && placer_.pending() > 1) {
+      throw InputError(args_.rawlog.string() + ": " + std::to_string(placer_.pending()) +
+                       " structure scans but no pose source (no odometry, no pose laser; "
+                       "give --poses FILE)");
+    }
+    placer_.drain(stage.trajectory(), true);
+    result_.poses.trajectory = stage.trajectory();
+    result_.poses.motion = stage.gate().stats();
+    const std::string dropped = stage.gate().summary(
+        args_.poses.empty() ? "odometry readings or increments" : "given poses");
+    if (!dropped.empty()) {
+      result_.warnings.push_back(args_.rawlog.string() + ": " + dropped);
+    }
+    result_.points.placement = placer_.stats();
+    result_.points.raw_triangles = mesh_.triangles();
+    checkUsable();
+    if (online_ && !unorganised_) {
+      result_.kind = RunKind::kOnline;
+      PlanarResult planar;
+      planar.online = online_->history();
+      planar.map = online_->map();
+      planar.message = "online over " + std::to_string(planar.online.size()) + " scans, " +
+                       std::to_string(planar.map.surfaces.size()) + " surfaces";
+      result_.planar = std::move(planar);
+    }
+  }
+
+  void checkUsable() const {
+    const auto& in = result_.input.stats;
+    const std::string file = args_.rawlog.string();
+    if (in.pose_scans == 0 && in.structure_scans == 0) {
+      throw InputError(file + ": no usable scans (" + std::to_string(in.records) + " records, " +
+                       std::to_string(in.observations) +
+                       " observations; check the [Sensors] labels and the selection)");
+    }
+    if (args_.poses_only) {
+      if (result_.poses.trajectory.empty()) {
+        throw InputError(file + ": no poses computed (no odometry or pose-laser scans)");
+      }
+      return;
+    }
+    if (in.structure_scans == 0) {
+      throw InputError(file +
+                       ": no structure observations (labels in [Sensors] structure); "
+                       "use --poses-only to compute poses only");
+    }
+    if (result_.points.placement.placed == 0) {
+      throw InputError(file + ": none of the " + std::to_string(in.structure_scans) +
+                       " structure scans has a pose (check timestamps and --poses)");
+    }
+  }
+
+  const MapperConfig& config_;
+  const MapperArgs& args_;
+  MappingResult& result_;
+  StageClock& clock_;
+  LiveView* live_;
+  std::unique_ptr<OnlineStage> online_;
+  bool unorganised_ = false;
+  points::RawMeshBuilder mesh_;
+  points::ScanPlacer placer_;
+  bool seen_any_ = false;
+};
+
+}  // namespace
+
+void runRawlog(const MapperConfig& config, const MapperArgs& args, StageClock& clock,
+               LiveView* live, MappingResult& result) {
+  RawlogRun(config, args, result, clock, live).run();
+}
+
+}  // namespace pmap::mapper
