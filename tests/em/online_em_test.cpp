@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <map>
+#include <stdexcept>
 
 #include "em_test_worlds.h"
 
@@ -155,6 +157,109 @@ TEST(OnlineEm, EmptyScansAndNoScansAreFine) {
   const OnlineUpdate u = em.addScan({}, {});
   EXPECT_EQ(u.new_points, 0);
   EXPECT_EQ(em.points(), 0u);
+}
+
+// A wall 4 m x 2.5 m seen by vertical scans (one row per scan), fed scan by scan.
+struct WallRun {
+  testing::Cloud cloud;
+  std::vector<std::size_t> order;
+  explicit WallRun(OnlineEm& em) {
+    std::mt19937_64 rng(3);
+    testing::addPlane(cloud, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d::UnitX(),
+                      Eigen::Vector3d::UnitZ(), 4.0, 2.5, 0.05, 0.01, rng);
+    Feeder(cloud).feed(em, 0, 10000, order);
+  }
+};
+
+void expectSameMaps(const PlanarMap& a, const PlanarMap& b) {
+  ASSERT_EQ(a.surfaces.size(), b.surfaces.size());
+  EXPECT_EQ(a.assignment, b.assignment);
+  for (std::size_t k = 0; k < a.surfaces.size(); ++k) {
+    EXPECT_EQ(a.surfaces[k].id, b.surfaces[k].id);
+    EXPECT_EQ(a.surfaces[k].rect.normal, b.surfaces[k].rect.normal);
+    EXPECT_EQ(a.surfaces[k].rect.centre, b.surfaces[k].rect.centre);
+    EXPECT_EQ(a.surfaces[k].rect.half_u, b.surfaces[k].rect.half_u);
+    EXPECT_EQ(a.surfaces[k].rect.half_v, b.surfaces[k].rect.half_v);
+  }
+}
+
+// A loop closure corrects past poses: every point of the wall moves by one
+// rigid transform, and the fitted surface follows it (same extent, same
+// members), without any new scan.
+TEST(OnlineEm, Item14_MovingAllPointsOfAPlaneMovesItsSurface) {
+  OnlineEm em(emOptions(0.01), OnlineEmOptions{});
+  const WallRun run(em);
+  const PlanarMap before = em.map();
+  ASSERT_EQ(before.surfaces.size(), 1u) << testing::describe(before.surfaces);
+  const Rectangle r0 = before.surfaces[0].rect;
+
+  const Eigen::Isometry3d t = Eigen::Translation3d(0.4, -0.3, 0.1) *
+                              Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()) *
+                              Eigen::AngleAxisd(0.05, Eigen::Vector3d::UnitX());
+  std::vector<std::int32_t> all(em.points());
+  std::vector<Eigen::Vector3d> moved(em.points());
+  for (std::size_t k = 0; k < em.points(); ++k) {
+    all[k] = static_cast<std::int32_t>(k);
+    moved[k] = t * run.cloud.points[run.order[k]];
+  }
+  const OnlineUpdate u = em.movePoints(all, moved);
+  EXPECT_EQ(u.moved, static_cast<int>(em.points()));
+  EXPECT_GE(u.active_surfaces, 1);
+
+  const PlanarMap after = em.map();
+  ASSERT_EQ(after.surfaces.size(), 1u) << testing::describe(after.surfaces);
+  const Rectangle& r1 = after.surfaces[0].rect;
+  EXPECT_EQ(after.surfaces[0].id, before.surfaces[0].id);
+  EXPECT_LT(testing::lineAngleDeg(r1.normal, t.linear() * r0.normal), 0.5);
+  EXPECT_LT((r1.centre - t * r0.centre).norm(), 0.05);
+  EXPECT_NEAR(r1.area(), r0.area(), 0.05 * r0.area());
+  for (std::size_t k = 0; k < em.points(); ++k) {
+    EXPECT_LT(std::abs(r1.planeDistance(moved[k])), 0.05) << k;
+  }
+  // The same members: at most a few boundary points change (the rectangle
+  // is refitted from its hull and a subsample, not transformed).
+  std::size_t changed = 0;
+  for (std::size_t k = 0; k < em.points(); ++k) {
+    changed += after.assignment[k] != before.assignment[k] ? 1 : 0;
+  }
+  EXPECT_LE(changed, em.points() / 100) << changed << " of " << em.points();
+}
+
+// Moving nothing changes nothing, now or for the scans that follow.
+TEST(OnlineEm, Item14_MovingNoPointsChangesNothing) {
+  testing::CorridorSpec spec;
+  spec.door_depth = 0.10;
+  testing::Cloud c;
+  std::mt19937_64 rng(5);
+  testing::addCorridor(c, spec, rng);
+  const Feeder feeder(c);
+  std::vector<std::size_t> oa, ob;
+  OnlineEm a(emOptions(0.02), OnlineEmOptions{});
+  OnlineEm b(emOptions(0.02), OnlineEmOptions{});
+  feeder.feed(a, 0, 40, oa);
+  feeder.feed(b, 0, 40, ob);
+  const OnlineUpdate u = b.movePoints({}, {});
+  EXPECT_EQ(u.moved, 0);
+  EXPECT_EQ(u.reassigned, 0);
+  EXPECT_EQ(u.active_surfaces, 0);
+  expectSameMaps(a.map(), b.map());
+  feeder.feed(a, 41, 10000, oa);
+  feeder.feed(b, 41, 10000, ob);
+  expectSameMaps(a.map(), b.map());
+}
+
+TEST(OnlineEm, Item14_MovePointsRejectsBadArgumentsAndMovesNothing) {
+  OnlineEm em(emOptions(0.01), OnlineEmOptions{});
+  const WallRun run(em);
+  const PlanarMap before = em.map();
+  const auto n = static_cast<std::int32_t>(em.points());
+  EXPECT_THROW(em.movePoints({0, 1}, {Eigen::Vector3d::Zero()}), std::invalid_argument);
+  EXPECT_THROW(em.movePoints({0, n}, {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()}),
+               std::invalid_argument);
+  EXPECT_THROW(em.movePoints({-1}, {Eigen::Vector3d::Zero()}), std::invalid_argument);
+  EXPECT_THROW(em.movePoints({0, 1}, {Eigen::Vector3d::Zero(), Eigen::Vector3d(0, NAN, 0)}),
+               std::invalid_argument);
+  expectSameMaps(before, em.map());
 }
 
 TEST(OnlineEmOptions, ValidateRejectsBadBounds) {

@@ -9,6 +9,8 @@
 #include <iterator>
 
 #include "pmap/common/error.h"
+#include "pmap/products/output_layout.h"
+#include "pmap/products/output_manifest.h"
 
 namespace pmap::eval {
 namespace {
@@ -83,6 +85,46 @@ TEST(EvalOutputs, Item12_TheMapFilesItReadsAreInputs) {
                            "map.glb", "map-geometry.glb", "raw.glb"}) {
     EXPECT_NE(std::find(inputs.begin(), inputs.end(), fs::path("m") / name), inputs.end()) << name;
   }
+}
+
+// Issue 14: the names come from products::OutputLayout, the textures from the
+// manifest; map-eval's outputs never replace a file of the run.
+TEST(EvalOutputs, Item14_TheManifestsFilesAreInputsToo) {
+  const fs::path dir = freshDir("manifest_inputs");
+  std::ofstream(dir / "poses.txt") << "0 0 0 0 0 0 0\n";
+  fs::create_directories(dir / "textures");
+  std::ofstream(dir / "textures" / "surface_3_0.png") << "png";
+  products::writeManifest(dir, products::OutputManifest{});
+  const std::vector<fs::path> inputs = knownInputs(dir, "g.json");
+  for (const char* name : {"manifest.json", "poses.txt", "textures/surface_3_0.png"}) {
+    EXPECT_NE(std::find(inputs.begin(), inputs.end(), dir / name), inputs.end()) << name;
+  }
+  EXPECT_THROW(checkOutputsSpareInputs(outputPaths(dir / "textures/surface_3_0.png", {}), inputs),
+               OutputError);
+  for (const std::string& name : mapInputFileNames()) {
+    EXPECT_TRUE(products::OutputLayout::names(name)) << name;
+  }
+}
+
+TEST(EvalOutputs, Item14_OutputsNeverReplaceAFileOfTheRun) {
+  const fs::path dir = freshDir("run_files");
+  const auto check = [&](const fs::path& out) {
+    checkOutputsSpareMapFiles(outputPaths(out, {0.05}), dir);
+  };
+  EXPECT_NO_THROW(check(dir / "eval.json"));
+  EXPECT_NO_THROW(check(dir / "my-evaluation.json"));  // a name the layout does not know
+  EXPECT_NO_THROW(check(dir / ".." / "eval.json"));    // not in the map folder
+  for (const products::LayoutEntry& e : products::OutputLayout::entries()) {
+    if (e.kind != products::LayoutEntry::Kind::kFile || e.name.find('/') != std::string::npos) {
+      continue;
+    }
+    if (e.owner == products::LayoutEntry::Owner::kEvaluation) {
+      EXPECT_NO_THROW(check(dir / e.name)) << e.name;
+    } else {
+      EXPECT_THROW(check(dir / e.name), OutputError) << e.name;
+    }
+  }
+  EXPECT_THROW(check(dir / "." / "viewer.html"), OutputError);
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "pmap/common/error.h"
 #include "pmap/common/ply.h"
 #include "pmap/products/map_gltf.h"
+#include "pmap/products/output_manifest.h"
 #include "surface_test_world.h"
 
 namespace pmap::eval {
@@ -418,6 +419,113 @@ TEST(MapEvalApp, Item12_NonFiniteNumbersInEveryInputAreInputErrors) {
     EXPECT_EQ(run.exit_code, 2);
     expectOneErrorLine(run, "raw.glb: accessor ");
     expectOneErrorLine(run, "POSITION 2 is not finite");
+  }
+}
+
+// --- Issue 14: map-eval reads only the files the run's manifest lists, and
+// only when they match it.
+
+/// writeWorld() with the manifest planar-mapper would have written.
+MapEvalArgs writeWorldWithManifest(const std::string& name) {
+  const MapEvalArgs args = writeWorld(world(), name);
+  products::writeManifest(args.map_dir, products::OutputManifest{});
+  return args;
+}
+
+TEST(MapEvalApp, Item14_ReadsAFolderThatMatchesItsManifestWithoutWarning) {
+  const MapEvalArgs args = writeWorldWithManifest("item14_match");
+  const AppRun run = runMapEval(cli(args));
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.err, "");
+  EXPECT_EQ(json::parse(fileBytes(args.out))["matched_surfaces"], 2);
+  // Its own outputs beside the map are exempt: a second evaluation into the
+  // folder (eval.json, octomap_*.bt there) reads the same map.
+  MapEvalArgs inside = args;
+  inside.out = args.map_dir / "eval.json";
+  EXPECT_EQ(runMapEval(cli(inside)).exit_code, 0);
+  EXPECT_EQ(runMapEval(cli(inside)).exit_code, 0);
+}
+
+TEST(MapEvalApp, Item14_RefusesAFolderWhoseFilesDoNotMatchItsManifest) {
+  const std::pair<std::string, std::string> cases[] = {
+      {"poses.txt", "SHA-256 differs"},  // same size, other bytes
+      {"surfaces.csv", "bytes, the manifest says"},
+      {"scans.csv", "but missing"}};
+  for (const auto& [file, fragment] : cases) {
+    const MapEvalArgs args = writeWorldWithManifest("item14_" + file);
+    const fs::path path = args.map_dir / file;
+    if (file == "poses.txt") {
+      std::string text = fileBytes(path);
+      text[text.size() - 2] = '1';  // "... 0 0\n" -> "... 0 1\n"
+      std::ofstream(path, std::ios::binary) << text;
+    } else if (file == "surfaces.csv") {
+      std::ofstream(path, std::ios::app) << "\n";
+    } else {
+      fs::remove(path);
+    }
+    const AppRun run = runMapEval(cli(args));
+    EXPECT_EQ(run.exit_code, 2) << file;
+    expectOneErrorLine(run, path.string() + ": ");
+    expectOneErrorLine(run, fragment);
+    EXPECT_FALSE(fs::exists(args.out)) << file;
+  }
+}
+
+// A file the manifest does not list is never read: here the surfaces.csv of
+// an earlier run, left beside a map whose run wrote none.
+TEST(MapEvalApp, Item14_FilesTheManifestDoesNotListAreNotRead) {
+  const MapEvalArgs args = writeWorld(world(), "item14_unlisted", /*with_csv=*/false);
+  products::writeManifest(args.map_dir, products::OutputManifest{});
+  writeSurfacesCsv(world().surfaces, args.map_dir / "surfaces.csv");
+  const json doc = evaluateMap(args);
+  EXPECT_TRUE(doc.contains("label_check"));
+  EXPECT_FALSE(doc.contains("matched_surfaces"));
+  EXPECT_FALSE(doc.contains("planar_map"));
+}
+
+TEST(MapEvalApp, Item14_AFolderWithoutManifestIsReadWithOneWarning) {
+  const MapEvalArgs args = writeWorld(world(), "item14_legacy");
+  const AppRun run = runMapEval(cli(args));
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  EXPECT_EQ(run.err.rfind("map-eval: warning: " + args.map_dir.string() + ": no manifest.json", 0),
+            0u)
+      << run.err;
+  EXPECT_EQ(json::parse(fileBytes(args.out))["matched_surfaces"], 2);
+}
+
+TEST(MapEvalApp, Item14_AMalformedManifestIsAnInputError) {
+  const MapEvalArgs args = writeWorld(world(), "item14_bad_manifest");
+  std::ofstream(args.map_dir / "manifest.json") << "{\"format\": \"planar-mapper-manifest\"}";
+  const AppRun run = runMapEval(cli(args));
+  EXPECT_EQ(run.exit_code, 2);
+  expectOneErrorLine(run, "manifest.json: manifest version");
+}
+
+// Every map file is read before the first OctoMap is built: a bad raw.glb
+// is reported although the OctoMap baseline would fail too (points.ply's
+// scan 0 has no row in scans.csv), and no .bt file is written.
+TEST(MapEvalApp, Item14_MapFilesAreCheckedBeforeTheOctomapBaselines) {
+  const MapEvalArgs args = writeWorld(world(), "item14_check_first");
+  std::ofstream(args.map_dir / "scans.csv") << "scan,timestamp,label,x,y,z\n1,1.0,LASER_V,5,1,1\n";
+  std::ofstream(args.map_dir / "raw.glb") << "not a glb";
+  products::writeManifest(args.map_dir, products::OutputManifest{});
+  const AppRun run = runMapEval(cli(args));
+  EXPECT_EQ(run.exit_code, 2);
+  expectOneErrorLine(run, (args.map_dir / "raw.glb").string() + ": ");
+  EXPECT_FALSE(fs::exists(args.out));
+  EXPECT_FALSE(fs::exists(args.out.parent_path() / "octomap_5cm.bt"));
+}
+
+TEST(MapEvalApp, Item14_OutNeverReplacesAFileOfTheRun) {
+  const MapEvalArgs args = writeWorldWithManifest("item14_out");
+  for (const char* name : {"viewer.html", "summary.json", "map.simplemap"}) {
+    MapEvalArgs a = args;
+    a.out = args.map_dir / name;
+    const AppRun run = runMapEval(cli(a));
+    EXPECT_EQ(run.exit_code, 4) << name;
+    expectOneErrorLine(run, "a planar-mapper output of the map folder");
+    EXPECT_FALSE(fs::exists(a.out)) << name;
   }
 }
 

@@ -49,6 +49,7 @@ std::vector<BadInputCase> fileCases() {
        [](const fs::path& d) {
          const fs::path p = writeFixture(d);
          ::chmod(p.c_str(), 0);
+         ::chmod(d.c_str(), 0777);  // --out's folder writable: the rawlog is the only problem
          return mapArgs(p, d);
        },
        2,

@@ -12,6 +12,8 @@
 #include "pmap/common/error.h"
 #include "pmap/common/text.h"
 #include "pmap/poses/poses_file.h"
+#include "pmap/products/output_folder.h"
+#include "pmap/products/output_layout.h"
 #include "pmap/report/report.h"
 #include "pmap/scene/map_scene.h"
 #include "pmap/scene/scene_file.h"
@@ -54,10 +56,12 @@ std::vector<products::TexturedQuad> readSurfaces(const fs::path& csv) {
   return quads;
 }
 
-products::MapModel modelOf(const fs::path& out) {
+/// The run's files, as its manifest lists them (doc/outputs.md).
+products::MapModel modelOf(const products::OutputFolder& out) {
+  using products::OutputLayout;
   products::MapModel model;
-  model.quads = readSurfaces(out / "surfaces.csv");
-  const poses::Trajectory trajectory = poses::readPosesFile(out / "poses.txt");
+  model.quads = readSurfaces(out.file(OutputLayout::kSurfacesCsv));
+  const poses::Trajectory trajectory = poses::readPosesFile(out.file(OutputLayout::kPosesTxt));
   for (const auto& p : trajectory.poses()) {
     model.path.emplace_back(p.pose.x, p.pose.y, p.pose.z);
   }
@@ -80,17 +84,21 @@ int main(int argc, char** argv) {
     return 1;
   }
   try {
-    const fs::path out = argv[1];
-    const fs::path dest = argc == 3 ? fs::path(argv[2]) : out;
+    const products::OutputFolder out(argv[1]);  // only files its manifest lists
+    if (!out.warning().empty()) {
+      std::cerr << "warning: " << out.warning() << "\n";
+    }
+    const fs::path dest = argc == 3 ? fs::path(argv[2]) : out.dir();
     const products::MapModel model = modelOf(out);
     std::vector<report::OnlineScanRow> rows;
-    if (fs::exists(out / "online.csv")) {
-      rows = report::readOnlineCsv(out / "online.csv");
+    if (out.has(products::OutputLayout::kOnlineCsv)) {
+      rows = report::readOnlineCsv(out.file(products::OutputLayout::kOnlineCsv));
     }
     ensureWritableDirectory(dest);
-    scene::writeMapScene(dest / "map.3Dscene", *scene::buildMapScene(model, {}));
-    const report::ReportResult r =
-        report::writeReport(dest, {model, readJson(out / "summary.json"), rows});
+    scene::writeMapScene(dest / products::OutputLayout::kMapScene,
+                         *scene::buildMapScene(model, {}));
+    const report::ReportResult r = report::writeReport(
+        dest, {model, readJson(out.file(products::OutputLayout::kSummary)), rows});
     for (const auto& w : r.warnings) {
       std::cerr << "warning: " << w << "\n";
     }

@@ -327,8 +327,7 @@ std::vector<std::int32_t> cornerTransfer(const std::vector<Eigen::Vector3d>& poi
                                          const std::vector<std::int32_t>& big_extent,
                                          const Rectangle& other,
                                          const std::vector<std::int32_t>& other_members,
-                                         double sigma) {
-  constexpr double kMinLegBeyondM = 0.5;
+                                         double sigma, const SelectionRules& rules) {
   const bool long_u = big.half_u >= big.half_v;
   const Eigen::Vector3d along = long_u ? big.axis_u : big.axisV();
   const Eigen::Vector3d across = long_u ? big.axisV() : big.axis_u;
@@ -337,7 +336,7 @@ std::vector<std::int32_t> cornerTransfer(const std::vector<Eigen::Vector3d>& poi
   double lo = INFINITY, hi = -INFINITY;
   for (const std::int32_t i : big_extent) {
     const Eigen::Vector3d d = points[static_cast<std::size_t>(i)] - big.centre;
-    if (std::abs(along.dot(d) - end) <= 1.0) {
+    if (std::abs(along.dot(d) - end) <= rules.corner_end_window_m) {
       lo = std::min(lo, across.dot(d));
       hi = std::max(hi, across.dot(d));
     }
@@ -350,7 +349,7 @@ std::vector<std::int32_t> cornerTransfer(const std::vector<Eigen::Vector3d>& poi
     other_lo = std::min(other_lo, across.dot(c - big.centre));
     other_hi = std::max(other_hi, across.dot(c - big.centre));
   }
-  if (!(hi > lo) || other_hi - other_lo < (hi - lo) + kMinLegBeyondM) {
+  if (!(hi > lo) || other_hi - other_lo < (hi - lo) + rules.corner_min_leg_beyond_m) {
     return moving;
   }
   std::size_t on_plane = 0, beside = 0;
@@ -361,13 +360,15 @@ std::vector<std::int32_t> cornerTransfer(const std::vector<Eigen::Vector3d>& poi
     const double c = across.dot(d);
     if (c >= lo - sigma && c <= hi + sigma) {
       moving.push_back(i);
-      on_plane += std::abs(big.planeDistance(p)) <= 2.5 * sigma ? 1 : 0;
+      on_plane += std::abs(big.planeDistance(p)) <= rules.grow_sigmas * sigma ? 1 : 0;
       // Beside big rather than beyond its end (a room's ceiling seen through
       // a doorway next to the corridor's): no L.
-      beside += sign * along.dot(d) < std::abs(end) - 0.1 ? 1 : 0;
+      beside += sign * along.dot(d) < std::abs(end) - rules.corner_beside_margin_m ? 1 : 0;
     }
   }
-  if (on_plane * 10 < moving.size() * 9 || beside * 10 > moving.size()) {
+  const auto on_plane_pct = static_cast<std::size_t>(rules.corner_on_plane_percent);
+  const auto beside_pct = static_cast<std::size_t>(rules.corner_beside_percent);
+  if (on_plane * 100 < moving.size() * on_plane_pct || beside * 100 > moving.size() * beside_pct) {
     moving.clear();
   }
   std::sort(moving.begin(), moving.end());

@@ -9,6 +9,7 @@
 #include "pmap/em/planarity.h"
 #include "pmap/em/rectangle_index.h"
 #include "pmap/em/seeding.h"
+#include "pmap/em/selection_policy.h"
 #include "pmap/em/split_proposals.h"
 #include "pmap/em/surface_fit.h"
 
@@ -42,17 +43,6 @@ std::vector<double> removalChanges(const Responsibilities& resp, double s_star, 
   return change;
 }
 
-double rectangleGap(const Rectangle& a, const Rectangle& b) {
-  double gap2 = std::min(a.squaredDistance(b.centre), b.squaredDistance(a.centre));
-  for (const auto& c : a.corners()) {
-    gap2 = std::min(gap2, b.squaredDistance(c));
-  }
-  for (const auto& c : b.corners()) {
-    gap2 = std::min(gap2, a.squaredDistance(c));
-  }
-  return std::sqrt(gap2);
-}
-
 }  // namespace
 
 ModelSelector::ModelSelector(const std::vector<Eigen::Vector3d>& points,
@@ -74,73 +64,66 @@ void ModelSelector::expect(const std::vector<Surface>& surfaces, Responsibilitie
                           options_.threads, resp);
 }
 
-double ModelSelector::emptyCost(const std::vector<std::int32_t>& members,
-                                const Rectangle& rect) const {
-  return options_.empty_area_cost * emptyArea(points_, members, rect, options_.split_cell_m);
+double ModelSelector::empty(const std::vector<std::int32_t>& members, const Rectangle& rect) const {
+  return emptyArea(points_, members, rect, options_.split_cell_m);
 }
 
-bool ModelSelector::validSurface(const std::vector<std::int32_t>& members,
-                                 const Rectangle& rect) const {
-  return members.size() >= static_cast<std::size_t>(options_.min_support) &&
-         (rows_.empty() ||
-          distinctRows(rows_, members) >= static_cast<std::size_t>(options_.min_rows)) &&
-         !isCurved(measurePlanarity(points_, members, rect), options_.min_curvature_radius_m);
-}
-
-bool ModelSelector::acceptablePart(const std::vector<std::int32_t>& members,
-                                   Rectangle& rect) const {
-  return members.size() >= static_cast<std::size_t>(options_.min_support) &&
-         fitSurface(points_, members, rect) == FitStatus::kOk && validSurface(members, rect);
+std::vector<char> ModelSelector::removals(const std::vector<Surface>& surfaces,
+                                          const Responsibilities& resp) {
+  const std::size_t J = surfaces.size();
+  const auto members = hardMembers(resp, J);
+  const auto entries = entryPoints(resp, J);
+  const std::vector<double> change =
+      removalChanges(resp, model_.outlierScore(), J, options_.selection_scoring);
+  std::vector<std::pair<double, std::size_t>> order;
+  for (std::size_t j = 0; j < J; ++j) {
+    const SurfaceVerdict check =
+        checkSurface(measurements(), members[j], surfaces[j].rect, options_,
+                     static_cast<std::size_t>(options_.min_support));
+    if (check.curved) {
+      for (const std::int32_t i : members[j]) {
+        not_planar_[static_cast<std::size_t>(i)] = 1;  // never seed here again
+      }
+    }
+    const double gain =
+        posteriorGain(change[j], -1, -empty(members[j], surfaces[j].rect), options_);
+    if (!check.valid() || raisesPosterior(gain, options_)) {
+      order.emplace_back(check.valid() ? gain : std::numeric_limits<double>::infinity(), j);
+    }
+  }
+  std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
+    return a.first > b.first || (a.first == b.first && a.second < b.second);
+  });
+  // Removals scored alone interact through shared points: take only
+  // surfaces whose points no other removal of this pass touches.
+  std::vector<char> claimed(points_.size(), 0);
+  std::vector<char> drop(J, 0);
+  for (const auto& [gain, j] : order) {
+    const bool free = std::none_of(entries[j].begin(), entries[j].end(),
+                                   [&](std::int32_t i) { return claimed[i] != 0; });
+    if (free || std::isinf(gain)) {
+      drop[j] = 1;
+      for (const std::int32_t i : entries[j]) {
+        claimed[i] = 1;
+      }
+    }
+  }
+  return drop;
 }
 
 int ModelSelector::removeSurfaces(std::vector<Surface>& surfaces, Responsibilities& resp) {
   int removed = 0;
-  for (int pass = 0; pass < 4 && !surfaces.empty(); ++pass) {
-    const std::size_t J = surfaces.size();
-    const auto members = hardMembers(resp, J);
-    const auto entries = entryPoints(resp, J);
-    const std::vector<double> change =
-        removalChanges(resp, model_.outlierScore(), J, options_.selection_scoring);
-    std::vector<std::pair<double, std::size_t>> order;
-    for (std::size_t j = 0; j < J; ++j) {
-      const bool invalid = !validSurface(members[j], surfaces[j].rect);
-      if (isCurved(measurePlanarity(points_, members[j], surfaces[j].rect),
-                   options_.min_curvature_radius_m)) {
-        for (const std::int32_t i : members[j]) {
-          not_planar_[static_cast<std::size_t>(i)] = 1;  // never seed here again
-        }
-      }
-      const double gain = change[j] + options_.kappa + emptyCost(members[j], surfaces[j].rect);
-      if (invalid || gain > options_.min_gain) {
-        order.emplace_back(invalid ? std::numeric_limits<double>::infinity() : gain, j);
-      }
-    }
-    std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
-      return a.first > b.first || (a.first == b.first && a.second < b.second);
-    });
-    // Removals scored alone interact through shared points: take only
-    // surfaces whose points no other removal of this pass touches.
-    std::vector<char> claimed(points_.size(), 0);
-    std::vector<char> drop(J, 0);
-    for (const auto& [gain, j] : order) {
-      const bool free = std::none_of(entries[j].begin(), entries[j].end(),
-                                     [&](std::int32_t i) { return claimed[i] != 0; });
-      if (free || std::isinf(gain)) {
-        drop[j] = 1;
-        for (const std::int32_t i : entries[j]) {
-          claimed[i] = 1;
-        }
-      }
-    }
+  for (int pass = 0; pass < options_.rules.removal_passes && !surfaces.empty(); ++pass) {
+    const std::vector<char> drop = removals(surfaces, resp);
     std::vector<Surface> kept;
-    for (std::size_t j = 0; j < J; ++j) {
+    for (std::size_t j = 0; j < surfaces.size(); ++j) {
       if (!drop[j]) {
         kept.push_back(surfaces[j]);
       } else {
         tabu_.push_back({round_, surfaces[j].rect});
       }
     }
-    const int n = static_cast<int>(J - kept.size());
+    const int n = static_cast<int>(surfaces.size() - kept.size());
     if (n == 0) {
       break;
     }
@@ -151,72 +134,70 @@ int ModelSelector::removeSurfaces(std::vector<Surface>& surfaces, Responsibiliti
   return removed;
 }
 
+double ModelSelector::pairLikelihoodChange(const std::vector<Surface>& surfaces,
+                                           const Responsibilities& resp, std::size_t j,
+                                           std::size_t k,
+                                           const std::vector<Rectangle>& rects) const {
+  std::vector<std::vector<std::int32_t>> near = {
+      pointsNear(grid_, points_, surfaces[j].rect, cutoff_),
+      pointsNear(grid_, points_, surfaces[k].rect, cutoff_)};
+  for (const Rectangle& r : rects) {
+    near.push_back(pointsNear(grid_, points_, r, cutoff_));
+  }
+  return logLikelihoodChange(points_, resp, model_, unionOf(near),
+                             {static_cast<std::int32_t>(j), static_cast<std::int32_t>(k)}, rects,
+                             options_.responsibility_tolerance, options_.selection_scoring);
+}
+
 // Fusion of two surfaces that are the same plane (when that raises the log
 // posterior), or else their re-cut: coplanar neighbours forming an L are cut
 // again where the larger rectangle is largest (a canonical form: a wall or
-// ceiling runs through the corner), when that costs no more than min_gain.
-int ModelSelector::fuseSurfaces(std::vector<Surface>& surfaces, Responsibilities& resp,
-                                std::int32_t& next_id) {
-  const std::size_t J = surfaces.size();
-  const auto members = hardMembers(resp, J);
-  const double cos_max = std::cos(options_.fuse_angle_deg * M_PI / 180.0);
-  struct Candidate {
-    double priority;
-    std::size_t j, k;
-    std::vector<Rectangle> replacement;
-  };
-  std::vector<Candidate> cands;
-  for (std::size_t j = 0; j < J; ++j) {
-    for (std::size_t k = j + 1; k < J; ++k) {
-      const Rectangle& a = surfaces[j].rect;
-      const Rectangle& b = surfaces[k].rect;
-      if (std::abs(a.normal.dot(b.normal)) < cos_max ||
-          std::abs(a.planeDistance(b.centre)) > options_.fuse_offset_m ||
-          std::abs(b.planeDistance(a.centre)) > options_.fuse_offset_m ||
-          rectangleGap(a, b) > options_.fuse_gap_m + options_.fuse_offset_m) {
-        continue;
-      }
-      const std::vector<std::int32_t> both = unionOf({members[j], members[k]});
-      Rectangle m = surfaces[members[j].size() >= members[k].size() ? j : k].rect;
-      if (!acceptablePart(both, m)) {
-        continue;
-      }
-      const double before = emptyCost(members[j], a) + emptyCost(members[k], b);
-      auto gainOf = [&](const std::vector<Rectangle>& rects, double empty_after) {
-        std::vector<std::vector<std::int32_t>> near = {pointsNear(grid_, points_, a, cutoff_),
-                                                       pointsNear(grid_, points_, b, cutoff_)};
-        for (const Rectangle& r : rects) {
-          near.push_back(pointsNear(grid_, points_, r, cutoff_));
-        }
-        return logLikelihoodChange(points_, resp, model_, unionOf(near),
-                                   {static_cast<std::int32_t>(j), static_cast<std::int32_t>(k)},
-                                   rects, options_.responsibility_tolerance,
-                                   options_.selection_scoring) +
-               before - empty_after;
-      };
-      const double fuse_gain = gainOf({m}, emptyCost(both, m)) + options_.kappa;
-      if (fuse_gain > options_.min_gain) {
-        cands.push_back({1e12 + fuse_gain, j, k, {m}});
-        continue;
-      }
-      if (auto recut = recutPair(both, m, std::max(members[j].size(), members[k].size()))) {
-        const double gain =
-            gainOf(recut->rects, emptyCost(recut->parts.part_a, recut->rects[0]) +
-                                     emptyCost(recut->parts.part_b, recut->rects[1]));
-        if (gain > -options_.min_gain) {
-          cands.push_back({gain, j, k, recut->rects});
-        }
-      }
-    }
+// ceiling runs through the corner), when that costs less than min_gain.
+std::optional<ModelSelector::PairChange> ModelSelector::pairChange(
+    const std::vector<Surface>& surfaces, const std::vector<std::vector<std::int32_t>>& members,
+    const Responsibilities& resp, std::size_t j, std::size_t k) const {
+  const Rectangle& a = surfaces[j].rect;
+  const Rectangle& b = surfaces[k].rect;
+  if (!fusionPartners(a, b, options_)) {
+    return std::nullopt;
   }
-  std::sort(cands.begin(), cands.end(), [](const Candidate& x, const Candidate& y) {
+  const std::vector<std::int32_t> both = unionOf({members[j], members[k]});
+  Rectangle m = surfaces[members[j].size() >= members[k].size() ? j : k].rect;
+  if (!fitValidSurface(measurements(), both, m, options_,
+                       static_cast<std::size_t>(options_.min_support))) {
+    return std::nullopt;
+  }
+  const double empty_before = empty(members[j], a) + empty(members[k], b);
+  const double fuse_gain = posteriorGain(pairLikelihoodChange(surfaces, resp, j, k, {m}), -1,
+                                         empty(both, m) - empty_before, options_);
+  if (raisesPosterior(fuse_gain, options_)) {
+    return PairChange{1e12 + fuse_gain, j, k, {m}};
+  }
+  const auto recut = recutPair(both, m, std::max(members[j].size(), members[k].size()));
+  if (!recut) {
+    return std::nullopt;
+  }
+  const double empty_after =
+      empty(recut->parts.part_a, recut->rects[0]) + empty(recut->parts.part_b, recut->rects[1]);
+  const double gain = posteriorGain(pairLikelihoodChange(surfaces, resp, j, k, recut->rects), 0,
+                                    empty_after - empty_before, options_);
+  if (!recutAffordable(gain, options_)) {
+    return std::nullopt;
+  }
+  return PairChange{gain, j, k, recut->rects};
+}
+
+int ModelSelector::applyPairChanges(std::vector<PairChange> changes, std::vector<Surface>& surfaces,
+                                    std::int32_t& next_id) const {
+  std::sort(changes.begin(), changes.end(), [](const PairChange& x, const PairChange& y) {
     return x.priority > y.priority ||
            (x.priority == y.priority && (x.j < y.j || (x.j == y.j && x.k < y.k)));
   });
+  const std::size_t J = surfaces.size();
   std::vector<char> used(J, 0);
   std::vector<char> drop(J, 0);
   int changed = 0;
-  for (const Candidate& c : cands) {
+  for (const PairChange& c : changes) {
     if (used[c.j] || used[c.k]) {
       continue;
     }
@@ -231,16 +212,33 @@ int ModelSelector::fuseSurfaces(std::vector<Surface>& surfaces, Responsibilities
     }
     ++changed;
   }
-  if (changed > 0) {
-    std::vector<Surface> kept;
-    for (std::size_t j = 0; j < J; ++j) {
-      if (!drop[j]) {
-        kept.push_back(surfaces[j]);
+  std::vector<Surface> kept;
+  for (std::size_t j = 0; j < J; ++j) {
+    if (!drop[j]) {
+      kept.push_back(surfaces[j]);
+    }
+  }
+  surfaces = std::move(kept);
+  return changed;
+}
+
+int ModelSelector::fuseSurfaces(std::vector<Surface>& surfaces, Responsibilities& resp,
+                                std::int32_t& next_id) {
+  const std::size_t J = surfaces.size();
+  const auto members = hardMembers(resp, J);
+  std::vector<PairChange> changes;
+  for (std::size_t j = 0; j < J; ++j) {
+    for (std::size_t k = j + 1; k < J; ++k) {
+      if (auto c = pairChange(surfaces, members, resp, j, k)) {
+        changes.push_back(std::move(*c));
       }
     }
-    surfaces = std::move(kept);
-    expect(surfaces, resp);
   }
+  if (changes.empty()) {
+    return 0;
+  }
+  const int changed = applyPairChanges(std::move(changes), surfaces, next_id);
+  expect(surfaces, resp);
   return changed;
 }
 
@@ -254,11 +252,13 @@ std::optional<ModelSelector::Recut> ModelSelector::recutPair(const std::vector<s
     return std::nullopt;
   }
   const std::size_t larger = std::max(cut->parts.part_a.size(), cut->parts.part_b.size());
-  if (larger * 100 <= current_larger * 105) {  // not clearly more canonical
+  if (!recutGrowsLarger(larger, current_larger, options_)) {  // not clearly more canonical
     return std::nullopt;
   }
   Recut r{cut->parts, {frame, frame}};
-  if (!acceptablePart(r.parts.part_a, r.rects[0]) || !acceptablePart(r.parts.part_b, r.rects[1])) {
+  const auto min_points = static_cast<std::size_t>(options_.min_support);
+  if (!fitValidSurface(measurements(), r.parts.part_a, r.rects[0], options_, min_points) ||
+      !fitValidSurface(measurements(), r.parts.part_b, r.rects[1], options_, min_points)) {
     return std::nullopt;
   }
   return r;
@@ -305,7 +305,10 @@ std::vector<Rectangle> ModelSelector::settleParts(
   for (std::size_t k = 0; k < parts.size(); ++k) {
     std::sort(members[k].begin(), members[k].end());
     if (members[k].size() >= 3) {
-      fitRectangle(points_, coherentMembers(members[k], neighbours_, best, 2), settled[k]);
+      fitRectangle(
+          points_,
+          coherentMembers(members[k], neighbours_, best, options_.rules.coherent_neighbours),
+          settled[k]);
     }
   }
   return settled;
@@ -330,82 +333,84 @@ std::vector<double> ModelSelector::memberLoss(const Responsibilities& resp, std:
   return loss;
 }
 
+std::vector<std::vector<std::vector<std::int32_t>>> ModelSelector::splitOptions(
+    const Surface& s, const std::vector<std::int32_t>& members, const Responsibilities& resp,
+    std::size_t j) const {
+  const std::size_t min_part = minSplitPart(1.0, options_);
+  // Two parts, or one part (a trim: the other part's points are left to
+  // whatever else explains them).
+  std::vector<std::vector<std::vector<std::int32_t>>> options;
+  for (const SplitProposal& p :
+       residualSplits(points_, members, s.rect, options_.split_cell_m, options_.split_min_offset_m,
+                      model_.sigma(), min_part, options_.rules)) {
+    options.push_back({p.part_a, p.part_b});
+  }
+  const auto cut =
+      coverageCut(points_, members, memberLoss(resp, j, members), s.rect, options_.split_cell_m,
+                  options_.empty_area_cost, options_.kappa, min_part, true);
+  if (cut && cut->keep == CutKeep::kBoth) {
+    options.push_back({cut->parts.part_a, cut->parts.part_b});
+  } else if (cut && !s.trimmed) {  // a surface is trimmed at most once
+    options.push_back({cut->keep == CutKeep::kPartA ? cut->parts.part_a : cut->parts.part_b});
+  }
+  return options;
+}
+
+std::vector<Rectangle> ModelSelector::bestSplit(
+    std::size_t j, const Surface& s, const std::vector<std::int32_t>& members,
+    const std::vector<std::vector<std::vector<std::int32_t>>>& options,
+    const Responsibilities& resp) const {
+  const auto old_near = pointsNear(grid_, points_, s.rect, cutoff_);
+  const double old_empty = empty(members, s.rect);
+  double best_gain = options_.min_gain;
+  std::vector<Rectangle> best;
+  for (const auto& parts : options) {
+    std::vector<Rectangle> fitted;
+    std::vector<std::vector<std::int32_t>> near = {old_near};
+    for (const auto& part : parts) {
+      Rectangle r = s.rect;
+      if (!fitValidSurface(measurements(), part, r, options_,
+                           static_cast<std::size_t>(options_.min_support))) {
+        break;
+      }
+      near.push_back(pointsNear(grid_, points_, r, cutoff_));
+      fitted.push_back(r);
+    }
+    if (fitted.size() != parts.size()) {
+      continue;
+    }
+    // Score the state the next M-step would reach: boundary points the
+    // parts would win back regrow them (a trim that would be undone gains
+    // nothing).
+    const std::vector<std::int32_t> affected = unionOf(near);
+    std::vector<std::vector<std::int32_t>> settled_members;
+    const std::vector<Rectangle> settled = settleParts(j, fitted, affected, resp, settled_members);
+    double empty_after = 0.0;
+    for (std::size_t k = 0; k < settled.size(); ++k) {
+      empty_after += empty(settled_members[k], settled[k]);
+    }
+    const double gain = posteriorGain(
+        logLikelihoodChange(points_, resp, model_, affected, {static_cast<std::int32_t>(j)},
+                            settled, options_.responsibility_tolerance, options_.selection_scoring),
+        static_cast<int>(settled.size()) - 1, empty_after - old_empty, options_);
+    if (gain > best_gain && std::none_of(settled.begin(), settled.end(),
+                                         [this](const Rectangle& r) { return isTabu(r); })) {
+      best_gain = gain;
+      best = settled;
+    }
+  }
+  return best;
+}
+
 int ModelSelector::splitSurfaces(std::vector<Surface>& surfaces, Responsibilities& resp,
                                  std::int32_t& next_id) {
   const std::size_t J = surfaces.size();
   const auto members = hardMembers(resp, J);
-  const auto min_part = static_cast<std::size_t>(options_.min_support);
   std::vector<Surface> added;
   int split = 0;
   for (std::size_t j = 0; j < J; ++j) {
-    const Rectangle rect = surfaces[j].rect;
-    // Candidate replacements of surface j: two parts, or one part (a trim:
-    // the other part's points are left to whatever else explains them).
-    std::vector<std::vector<std::vector<std::int32_t>>> options;
-    for (const SplitProposal& p :
-         residualSplits(points_, members[j], rect, options_.split_cell_m,
-                        options_.split_min_offset_m, model_.sigma(), min_part)) {
-      options.push_back({p.part_a, p.part_b});
-    }
-    if (auto cut = coverageCut(points_, members[j], memberLoss(resp, j, members[j]), rect,
-                               options_.split_cell_m, options_.empty_area_cost, options_.kappa,
-                               min_part, true)) {
-      switch (cut->keep) {
-        case CutKeep::kBoth:
-          options.push_back({cut->parts.part_a, cut->parts.part_b});
-          break;
-        case CutKeep::kPartA:
-          if (!surfaces[j].trimmed) {
-            options.push_back({cut->parts.part_a});
-          }
-          break;
-        case CutKeep::kPartB:
-          if (!surfaces[j].trimmed) {
-            options.push_back({cut->parts.part_b});
-          }
-          break;
-      }
-    }
-    const auto old_near = pointsNear(grid_, points_, rect, cutoff_);
-    const double old_empty = emptyCost(members[j], rect);
-    double best_gain = options_.min_gain;
-    std::vector<Rectangle> best;
-    for (const auto& parts : options) {
-      std::vector<Rectangle> fitted;
-      std::vector<std::vector<std::int32_t>> near = {old_near};
-      for (const auto& part : parts) {
-        Rectangle r = rect;
-        if (!acceptablePart(part, r)) {
-          break;
-        }
-        near.push_back(pointsNear(grid_, points_, r, cutoff_));
-        fitted.push_back(r);
-      }
-      if (fitted.size() != parts.size()) {
-        continue;
-      }
-      // Score the state the next M-step would reach: boundary points the
-      // parts would win back regrow them (a trim that would be undone gains
-      // nothing).
-      const std::vector<std::int32_t> affected = unionOf(near);
-      std::vector<std::vector<std::int32_t>> settled_members;
-      const std::vector<Rectangle> settled =
-          settleParts(j, fitted, affected, resp, settled_members);
-      double empty = 0.0;
-      for (std::size_t k = 0; k < settled.size(); ++k) {
-        empty += emptyCost(settled_members[k], settled[k]);
-      }
-      const double gain =
-          logLikelihoodChange(points_, resp, model_, affected, {static_cast<std::int32_t>(j)},
-                              settled, options_.responsibility_tolerance,
-                              options_.selection_scoring) -
-          options_.kappa * static_cast<double>(settled.size() - 1) + old_empty - empty;
-      if (gain > best_gain && std::none_of(settled.begin(), settled.end(),
-                                           [this](const Rectangle& r) { return isTabu(r); })) {
-        best_gain = gain;
-        best = settled;
-      }
-    }
+    const std::vector<Rectangle> best =
+        bestSplit(j, surfaces[j], members[j], splitOptions(surfaces[j], members[j], resp, j), resp);
     if (!best.empty()) {
       surfaces[j].rect = best[0];
       surfaces[j].id = next_id++;
@@ -433,18 +438,21 @@ int ModelSelector::seed(std::vector<Surface>& surfaces, const Responsibilities& 
   }
   const SeedResult s = seedSurfaces(
       points_, neighbours_, seedable, model_, options_,
-      [this](const std::vector<std::int32_t>& m, Rectangle& r) { return acceptablePart(m, r); },
+      [this](const std::vector<std::int32_t>& m, Rectangle& r) {
+        return fitValidSurface(measurements(), m, r, options_,
+                               static_cast<std::size_t>(options_.min_support));
+      },
       rng_);
   // Eq. (30): a new surface must raise the log posterior by more than its
   // penalty, by the same score removal uses (else it would be removed again).
   int added = 0;
   for (std::size_t k = 0; k < s.surfaces.size(); ++k) {
     const Rectangle& r = s.surfaces[k];
-    const double gain =
+    const double gain = posteriorGain(
         logLikelihoodChange(points_, resp, model_, pointsNear(grid_, points_, r, cutoff_), {}, {r},
-                            options_.responsibility_tolerance, options_.selection_scoring) -
-        options_.kappa - emptyCost(s.members[k], r);
-    if (gain > options_.min_gain && !isTabu(r)) {
+                            options_.responsibility_tolerance, options_.selection_scoring),
+        1, empty(s.members[k], r), options_);
+    if (raisesPosterior(gain, options_) && !isTabu(r)) {
       surfaces.push_back({r, next_id++, static_cast<std::int32_t>(s.members[k].size())});
       ++added;
     }
@@ -465,22 +473,17 @@ int ModelSelector::fuse(std::vector<Surface>& surfaces, std::int32_t& next_id) {
 }
 
 // Tabu (against model-selection cycles): a surface removed in one of the
-// last kTabuRounds rounds may not be created again by a split or a seed; a
-// split that the next round's removal undoes would otherwise repeat forever.
+// last rules.tabu_rounds rounds may not be created again by a split or a
+// seed; a split that the next round's removal undoes would otherwise repeat
+// forever.
 bool ModelSelector::isTabu(const Rectangle& r) const {
-  for (const auto& [when, t] : tabu_) {
-    if (std::abs(r.normal.dot(t.normal)) > std::cos(5.0 * M_PI / 180.0) &&
-        std::abs(t.planeDistance(r.centre)) < 2.0 * model_.sigma() &&
-        (r.centre - t.centre).norm() < 0.1 + 0.25 * std::sqrt(t.area())) {
-      return true;
-    }
-  }
-  return false;
+  return std::any_of(tabu_.begin(), tabu_.end(),
+                     [&](const auto& t) { return sameAsRemoved(r, t.second, options_); });
 }
 
 SelectionChanges ModelSelector::round(std::vector<Surface>& surfaces, std::int32_t& next_id) {
   ++round_;
-  while (!tabu_.empty() && tabu_.front().first < round_ - kTabuRounds) {
+  while (!tabu_.empty() && tabu_.front().first < round_ - options_.rules.tabu_rounds) {
     tabu_.pop_front();
   }
   SelectionChanges c;

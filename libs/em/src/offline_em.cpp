@@ -31,6 +31,15 @@ std::vector<double> emptyAreas(const std::vector<Eigen::Vector3d>& points,
   return out;
 }
 
+/// The first surface id above those of `surfaces` (0 if none).
+std::int32_t nextFreeId(const std::vector<Surface>& surfaces) {
+  std::int32_t next_id = 0;
+  for (const Surface& s : surfaces) {
+    next_id = std::max(next_id, s.id + 1);
+  }
+  return next_id;
+}
+
 }  // namespace
 
 const char* toString(Termination t) {
@@ -39,8 +48,6 @@ const char* toString(Termination t) {
       return "converged";
     case Termination::kMaxIterations:
       return "max_iterations";
-    case Termination::kOnline:
-      return "online";
     default:
       return "no_points";
   }
@@ -80,10 +87,7 @@ EmResult OfflineEm::run(const std::vector<Eigen::Vector3d>& points, const Neighb
     return result;
   }
   ModelSelector selector(points, neighbours, rows, options_);
-  std::int32_t next_id = 0;
-  for (const Surface& s : surfaces) {
-    next_id = std::max(next_id, s.id + 1);
-  }
+  std::int32_t next_id = nextFreeId(surfaces);
   Responsibilities resp;
   int patience = 0;
   bool last_round_quiet = false;
@@ -120,7 +124,8 @@ EmResult OfflineEm::run(const std::vector<Eigen::Vector3d>& points, const Neighb
       result.termination = Termination::kConverged;
       break;
     }
-    maximizeSurfaces(points, neighbours, resp, options_.threads, surfaces);  // eqs. (19)-(29)
+    maximizeSurfaces(points, neighbours, resp, options_.threads, surfaces,
+                     options_.rules.coherent_neighbours);  // eqs. (19)-(29)
   }
   if (options_.model_selection && result.termination != Termination::kConverged) {
     selector.prune(surfaces);  // surfaces seeded in the last round were never re-checked

@@ -31,6 +31,9 @@ bool OnlineEmOptions::validate(std::string* why) const {
     return fail("selection_sample_cap must be >= 100");
   if (removal_after_scans < 1)
     return fail("removal_after_scans must be >= 1");
+  if (seed_tries < 1 || seed_tries > 255 || seed_regions_per_turn < 1 || seeds_per_turn < 1) {
+    return fail("seed_tries must be in [1, 255], seed_regions_per_turn and seeds_per_turn >= 1");
+  }
   return true;
 }
 

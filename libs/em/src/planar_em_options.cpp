@@ -69,6 +69,47 @@ bool PlanarEmOptions::validate(std::string* why) const {
     return fail(why, "fine_max_edge_m must be > 0");
   if (threads < 1 || threads > 256)
     return fail(why, "threads must be in [1, 256]");
+  return rules.validate(why);
+}
+
+bool SelectionRules::validate(std::string* why) const {
+  if (!positive(grow_sigmas))
+    return fail(why, "rules.grow_sigmas must be > 0");
+  if (recut_min_growth_percent < 0 || recut_max_transfer_percent < 1 ||
+      recut_max_transfer_percent > 100) {
+    return fail(why,
+                "rules.recut_min_growth_percent must be >= 0 and "
+                "rules.recut_max_transfer_percent in [1, 100]");
+  }
+  if (removal_passes < 1 || tabu_rounds < 0)
+    return fail(why, "rules.removal_passes must be >= 1 and rules.tabu_rounds >= 0");
+  if (!(tabu_angle_deg >= 0.0 && tabu_angle_deg < 90.0) || !(tabu_offset_sigmas >= 0.0) ||
+      !(tabu_centre_m >= 0.0) || !(tabu_centre_per_side >= 0.0)) {
+    return fail(why, "rules.tabu_* must be >= 0 (angle below 90 degrees)");
+  }
+  if (!(poor_coverage_min_area_m2 >= 0.0) || poor_coverage_min_points < 1 ||
+      !(poor_coverage_empty_fraction > 0.0 && poor_coverage_empty_fraction < 1.0)) {
+    return fail(why, "rules.poor_coverage_*: area >= 0, points >= 1, fraction in (0, 1)");
+  }
+  if (min_part_points < 3 || !positive(sampled_cell_spacings))
+    return fail(why, "rules.min_part_points must be >= 3 and rules.sampled_cell_spacings > 0");
+  if (coherent_neighbours < 0 || coherent_neighbours > 4 ||
+      !(curved_min_variance_explained >= 0.0 && curved_min_variance_explained <= 1.0)) {
+    return fail(why,
+                "rules.coherent_neighbours must be in [0, 4] and "
+                "rules.curved_min_variance_explained in [0, 1]");
+  }
+  if (!positive(residual_cell_points) || residual_min_cell_points < 1 ||
+      !positive(residual_sigmas)) {
+    return fail(why, "rules.residual_*: cell points > 0, min cell points >= 1, sigmas > 0");
+  }
+  if (!positive(corner_end_window_m) || !(corner_min_leg_beyond_m >= 0.0) ||
+      corner_on_plane_percent < 0 || corner_on_plane_percent > 100 || corner_beside_percent < 0 ||
+      corner_beside_percent > 100 || !(corner_beside_margin_m >= 0.0)) {
+    return fail(why, "rules.corner_*: lengths >= 0 (window > 0), percentages in [0, 100]");
+  }
+  if (seed_attempts_per_surface < 1)
+    return fail(why, "rules.seed_attempts_per_surface must be >= 1");
   return true;
 }
 

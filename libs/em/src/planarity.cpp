@@ -51,8 +51,8 @@ Planarity measurePlanarity(const std::vector<Eigen::Vector3d>& points,
   return out;
 }
 
-bool isCurved(const Planarity& p, double min_radius_m) {
-  return p.curvature_radius_m < min_radius_m && p.variance_explained >= 0.25;
+bool isCurved(const Planarity& p, double min_radius_m, double min_variance_explained) {
+  return p.curvature_radius_m < min_radius_m && p.variance_explained >= min_variance_explained;
 }
 
 }  // namespace pmap::em

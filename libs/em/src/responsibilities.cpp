@@ -15,6 +15,31 @@ struct ChunkOut {
   double loglik = 0.0;
 };
 
+/// Concatenates the chunks' sparse rows (in point order) into `out` and
+/// derives the weights e_ij = exp(s_ij - l_i).
+void mergeChunks(const std::vector<ChunkOut>& chunks, std::size_t n, Responsibilities& out) {
+  out.offsets.assign(n + 1, 0);
+  out.surface.clear();
+  out.score.clear();
+  out.total_loglik = 0.0;
+  std::size_t i = 0;
+  for (const ChunkOut& co : chunks) {
+    for (const std::uint32_t count : co.counts) {
+      out.offsets[i + 1] = out.offsets[i] + count;
+      ++i;
+    }
+    out.surface.insert(out.surface.end(), co.surface.begin(), co.surface.end());
+    out.score.insert(out.score.end(), co.score.begin(), co.score.end());
+    out.total_loglik += co.loglik;
+  }
+  out.weight.resize(out.score.size());
+  for (std::size_t p = 0; p < n; ++p) {
+    for (std::uint32_t k = out.offsets[p]; k < out.offsets[p + 1]; ++k) {
+      out.weight[k] = std::exp(out.score[k] - out.loglik[p]);
+    }
+  }
+}
+
 }  // namespace
 
 double logAddExp(double a, double b) {
@@ -69,26 +94,7 @@ void computeResponsibilities(const std::vector<Eigen::Vector3d>& points,
       co.loglik += l;
     }
   });
-  out.offsets.assign(n + 1, 0);
-  out.surface.clear();
-  out.score.clear();
-  out.total_loglik = 0.0;
-  std::size_t i = 0;
-  for (const ChunkOut& co : chunks) {
-    for (const std::uint32_t count : co.counts) {
-      out.offsets[i + 1] = out.offsets[i] + count;
-      ++i;
-    }
-    out.surface.insert(out.surface.end(), co.surface.begin(), co.surface.end());
-    out.score.insert(out.score.end(), co.score.begin(), co.score.end());
-    out.total_loglik += co.loglik;
-  }
-  out.weight.resize(out.score.size());
-  for (std::size_t p = 0; p < n; ++p) {
-    for (std::uint32_t k = out.offsets[p]; k < out.offsets[p + 1]; ++k) {
-      out.weight[k] = std::exp(out.score[k] - out.loglik[p]);
-    }
-  }
+  mergeChunks(chunks, n, out);
 }
 
 }  // namespace pmap::em

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <deque>
 
+#include "pmap/em/selection_policy.h"
 #include "pmap/em/surface_fit.h"
 
 namespace pmap::em {
@@ -97,9 +98,10 @@ SeedResult seedSurfaces(const std::vector<Eigen::Vector3d>& points, const Neighb
   result.candidates = triples.size();
   std::shuffle(triples.begin(), triples.end(), rng);
   if (max_attempts == 0) {
-    max_attempts = 20 * static_cast<std::size_t>(options.max_new_per_round);
+    max_attempts = static_cast<std::size_t>(options.rules.seed_attempts_per_surface) *
+                   static_cast<std::size_t>(options.max_new_per_round);
   }
-  const double grow_distance = 2.5 * model.sigma();
+  const double grow_distance = growDistance(options);
   for (const Triple& t : triples) {
     if (result.surfaces.size() >= static_cast<std::size_t>(options.max_new_per_round) ||
         result.attempts >= max_attempts) {

@@ -48,15 +48,17 @@ int components(const CellGrid& g, const std::vector<int>& sign, std::vector<int>
 std::vector<SplitProposal> residualSplits(const std::vector<Eigen::Vector3d>& points,
                                           const std::vector<std::int32_t>& members,
                                           const Rectangle& rect, double cell_m, double min_offset_m,
-                                          double sigma, std::size_t min_part) {
+                                          double sigma, std::size_t min_part,
+                                          const SelectionRules& rules) {
   std::vector<SplitProposal> out;
   if (members.size() < 2 * min_part) {
     return out;
   }
-  // Cells large enough to hold ~24 points on average: a patch's mean residual
-  // is then known to ~sigma/5, and noise-thinned patches still count.
+  // Cells large enough to hold ~residual_cell_points points on average: a
+  // patch's mean residual is then known to ~sigma/5, and noise-thinned
+  // patches still count.
   const double density = static_cast<double>(members.size()) / std::max(rect.area(), 1e-9);
-  cell_m = std::max(cell_m, std::sqrt(24.0 / density));
+  cell_m = std::max(cell_m, std::sqrt(rules.residual_cell_points / density));
   const CellGrid g = gridOf(points, members, rect, cell_m);
   const std::size_t cells = g.cells.size();  // occupied cells only
   std::vector<double> sum(cells, 0.0);
@@ -68,11 +70,12 @@ std::vector<SplitProposal> residualSplits(const std::vector<Eigen::Vector3d>& po
   }
   std::vector<int> sign(cells, 0);
   for (std::size_t c = 0; c < cells; ++c) {
-    if (count[c] < 8) {
+    if (count[c] < rules.residual_min_cell_points) {
       continue;
     }
     const double mean = sum[c] / count[c];
-    if (std::abs(mean) > min_offset_m && std::abs(mean) > 4.0 * sigma / std::sqrt(count[c])) {
+    if (std::abs(mean) > min_offset_m &&
+        std::abs(mean) > rules.residual_sigmas * sigma / std::sqrt(count[c])) {
       sign[c] = mean > 0 ? 1 : -1;
     }
   }
@@ -106,10 +109,10 @@ std::vector<SplitProposal> residualSplits(const std::vector<Eigen::Vector3d>& po
 std::optional<SplitProposal> residualSplit(const std::vector<Eigen::Vector3d>& points,
                                            const std::vector<std::int32_t>& members,
                                            const Rectangle& rect, double cell_m,
-                                           double min_offset_m, double sigma,
-                                           std::size_t min_part) {
+                                           double min_offset_m, double sigma, std::size_t min_part,
+                                           const SelectionRules& rules) {
   std::vector<SplitProposal> all =
-      residualSplits(points, members, rect, cell_m, min_offset_m, sigma, min_part);
+      residualSplits(points, members, rect, cell_m, min_offset_m, sigma, min_part, rules);
   if (all.empty()) {
     return std::nullopt;
   }

@@ -142,7 +142,8 @@ std::vector<std::int32_t> coherentMembers(const std::vector<std::int32_t>& membe
 }
 
 void maximizeSurfaces(const std::vector<Eigen::Vector3d>& points, const Neighbours& neighbours,
-                      const Responsibilities& resp, int threads, std::vector<Surface>& surfaces) {
+                      const Responsibilities& resp, int threads, std::vector<Surface>& surfaces,
+                      int coherent_neighbours) {
   const std::size_t n = points.size();
   const std::size_t J = surfaces.size();
   std::vector<std::vector<PlaneMoments>> partial(chunkCount(n), std::vector<PlaneMoments>(J));
@@ -170,8 +171,9 @@ void maximizeSurfaces(const std::vector<Eigen::Vector3d>& points, const Neighbou
       continue;
     }
     if (fitted.bounded &&
-        fitRectangle(points, coherentMembers(members[j], neighbours, resp.best, 2), fitted) !=
-            FitStatus::kOk) {
+        fitRectangle(points,
+                     coherentMembers(members[j], neighbours, resp.best, coherent_neighbours),
+                     fitted) != FitStatus::kOk) {
       continue;
     }
     surfaces[j].rect = fitted;

@@ -1,14 +1,18 @@
 #include "pmap/eval/baseline_evaluation.h"
 
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 
 #include "pmap/eval/glb_mesh.h"
 #include "pmap/eval/octomap_baseline.h"
+#include "pmap/products/output_layout.h"
 
 namespace pmap::eval {
 namespace fs = std::filesystem;
 using nlohmann::json;
+using products::OutputFolder;
+using products::OutputLayout;
 
 namespace {
 
@@ -20,15 +24,61 @@ void addAccuracy(const MapAccuracy& a, json& out) {
   out["map_samples"] = a.map_to_gt.samples;
 }
 
-json octomapJson(const fs::path& dir, const GroundTruth& gt, const MapPoints& points,
+/// A mesh file of the map, read (and so validated) before any baseline is built.
+struct MeshFile {
+  fs::path path;
+  std::vector<Triangle3> triangles;
+  std::int64_t bytes = 0;
+};
+
+MeshFile readMesh(const fs::path& glb) {
+  MeshFile m{glb, readGlbTriangles(glb), 0};
+  m.bytes = static_cast<std::int64_t>(fs::file_size(glb));
+  return m;
+}
+
+/// Every map file the baselines need, read before the first OctoMap is
+/// built: a bad file fails at once, with nothing built or written.
+struct BaselineInputs {
+  std::optional<ScanOrigins> origins;  ///< scans.csv, when the run wrote it
+  fs::path points_ply;
+  std::optional<MeshFile> raw;  ///< raw.glb
+  bool planar = false;          ///< surfaces.csv and map.glb
+  bool textured = false;        ///< textures.csv: the geometry is map-geometry.glb
+  std::optional<MeshFile> planar_geometry;
+  std::int64_t map_glb_bytes = 0;
+};
+
+BaselineInputs readBaselineInputs(const OutputFolder& folder) {
+  using L = OutputLayout;
+  BaselineInputs in;
+  in.points_ply = folder.file(L::kPointsPly);
+  if (folder.has(L::kScansCsv)) {
+    in.origins = readScanOrigins(folder.file(L::kScansCsv));
+  }
+  if (folder.has(L::kRawGlb)) {
+    in.raw = readMesh(folder.file(L::kRawGlb));
+  }
+  in.planar = folder.has(L::kSurfacesCsv) && folder.has(L::kMapGlb);
+  if (in.planar) {
+    in.textured = folder.has(L::kTexturesCsv);
+    const char* geometry = in.textured ? L::kMapGeometryGlb : L::kMapGlb;
+    if (folder.has(geometry)) {
+      in.planar_geometry = readMesh(folder.file(geometry));
+    }
+    in.map_glb_bytes = static_cast<std::int64_t>(fs::file_size(folder.file(L::kMapGlb)));
+  }
+  return in;
+}
+
+json octomapJson(const BaselineInputs& in, const GroundTruth& gt, const MapPoints& points,
                  const std::vector<Eigen::Vector3d>& samples, const Rigid2D& map_to_gt,
                  const BaselineOptions& options, std::vector<BaselineFile>& files) {
-  const ScanOrigins origins = readScanOrigins(dir / "scans.csv");
   json list = json::array();
   for (const double res : options.octomap_resolutions_m) {
     OctomapOptions o;
     o.resolution_m = res;
-    OctomapResult r = buildOctomap(origins, points, o, dir / "points.ply");
+    OctomapResult r = buildOctomap(*in.origins, points, o, in.points_ply);
     files.push_back({octomapFileName(res), std::move(r.bt_file)});
     json e = {{"resolution_m", r.resolution_m},
               {"scans", r.scans},
@@ -47,31 +97,28 @@ json octomapJson(const fs::path& dir, const GroundTruth& gt, const MapPoints& po
   return list;
 }
 
-json meshJson(const fs::path& glb, const GroundTruth& gt,
+json meshJson(const MeshFile& mesh, const GroundTruth& gt,
               const std::vector<Eigen::Vector3d>& samples, const Rigid2D& map_to_gt,
               const BaselineOptions& options) {
-  const std::vector<Triangle3> triangles = readGlbTriangles(glb);
-  json e = {{"file", glb.filename().string()},
-            {"triangles", triangles.size()},
-            {"file_bytes", fs::file_size(glb)}};
-  addAccuracy(meshAccuracy(triangles, gt, samples, map_to_gt, options.accuracy), e);
+  json e = {{"file", mesh.path.filename().string()},
+            {"triangles", mesh.triangles.size()},
+            {"file_bytes", mesh.bytes}};
+  addAccuracy(meshAccuracy(mesh.triangles, gt, samples, map_to_gt, options.accuracy), e);
   return e;
 }
 
 /// The planar map's geometry alone: map-geometry.glb when the map is
 /// textured, else map.glb (an untextured map.glb is geometry only).
-json planarJson(const fs::path& dir, const GroundTruth& gt,
+json planarJson(const BaselineInputs& in, const GroundTruth& gt,
                 const std::vector<Eigen::Vector3d>& samples, const Rigid2D& map_to_gt,
                 const BaselineOptions& options) {
-  const bool textured = fs::exists(dir / "textures.csv");
-  const fs::path geometry = textured ? dir / "map-geometry.glb" : dir / "map.glb";
-  if (!fs::exists(geometry)) {
-    return {{"file", nullptr}, {"reason", "textured map without map-geometry.glb"}};
+  if (!in.planar_geometry) {
+    return {{"file", nullptr},
+            {"reason", std::string("textured map without ") + OutputLayout::kMapGeometryGlb}};
   }
-  json e = meshJson(geometry, gt, samples, map_to_gt, options);
-  const auto map_bytes = static_cast<std::int64_t>(fs::file_size(dir / "map.glb"));
-  e["texture_bytes"] = textured ? map_bytes - e["file_bytes"].get<std::int64_t>() : 0;
-  e["map_glb_bytes"] = map_bytes;
+  json e = meshJson(*in.planar_geometry, gt, samples, map_to_gt, options);
+  e["texture_bytes"] = in.textured ? in.map_glb_bytes - in.planar_geometry->bytes : 0;
+  e["map_glb_bytes"] = in.map_glb_bytes;
   return e;
 }
 
@@ -87,13 +134,14 @@ bool BaselineOptions::validate(std::string* why) const {
   return accuracy.validate(why);
 }
 
-std::vector<BaselineFile> addBaselineKeys(const fs::path& dir, const GroundTruth& gt,
+std::vector<BaselineFile> addBaselineKeys(const OutputFolder& folder, const GroundTruth& gt,
                                           const MapPoints& points, const Rigid2D& map_to_gt,
                                           const BaselineOptions& options, json& doc) {
   std::string why;
   if (!options.validate(&why)) {
     throw std::invalid_argument("BaselineOptions: " + why);
   }
+  const BaselineInputs in = readBaselineInputs(folder);  // every file checked before any work
   const std::vector<Eigen::Vector3d> samples =
       groundTruthSamples(gt, points, map_to_gt, options.accuracy);
   doc["baseline_accuracy"] = {{"gt_samples", samples.size()},
@@ -101,14 +149,14 @@ std::vector<BaselineFile> addBaselineKeys(const fs::path& dir, const GroundTruth
                               {"mesh_sample_m", options.accuracy.mesh_sample_m},
                               {"max_distance_m", options.accuracy.index.max_distance_m}};
   std::vector<BaselineFile> files;
-  if (fs::exists(dir / "scans.csv")) {
-    doc["octomap"] = octomapJson(dir, gt, points, samples, map_to_gt, options, files);
+  if (in.origins) {
+    doc["octomap"] = octomapJson(in, gt, points, samples, map_to_gt, options, files);
   }
-  if (fs::exists(dir / "raw.glb")) {
-    doc["raw_map"] = meshJson(dir / "raw.glb", gt, samples, map_to_gt, options);
+  if (in.raw) {
+    doc["raw_map"] = meshJson(*in.raw, gt, samples, map_to_gt, options);
   }
-  if (fs::exists(dir / "surfaces.csv") && fs::exists(dir / "map.glb")) {
-    doc["planar_map"] = planarJson(dir, gt, samples, map_to_gt, options);
+  if (in.planar) {
+    doc["planar_map"] = planarJson(in, gt, samples, map_to_gt, options);
   }
   return files;
 }

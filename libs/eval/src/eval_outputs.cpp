@@ -6,9 +6,13 @@
 #include "pmap/common/error.h"
 #include "pmap/eval/octomap_baseline.h"
 #include "pmap/products/json_file.h"
+#include "pmap/products/output_layout.h"
+#include "pmap/products/output_manifest.h"
 
 namespace pmap::eval {
 namespace fs = std::filesystem;
+using products::LayoutEntry;
+using products::OutputLayout;
 
 namespace {
 
@@ -22,9 +26,10 @@ bool sameFile(const fs::path& output, const fs::path& input) {
 }  // namespace
 
 const std::vector<std::string>& mapInputFileNames() {
-  static const std::vector<std::string> names = {"poses.txt",        "points.ply",   "scans.csv",
-                                                 "surfaces.csv",     "textures.csv", "map.glb",
-                                                 "map-geometry.glb", "raw.glb"};
+  using L = OutputLayout;
+  static const std::vector<std::string> names = {L::kManifest, L::kPosesTxt,       L::kPointsPly,
+                                                 L::kScansCsv, L::kSurfacesCsv,    L::kTexturesCsv,
+                                                 L::kMapGlb,   L::kMapGeometryGlb, L::kRawGlb};
   return names;
 }
 
@@ -32,6 +37,13 @@ std::vector<fs::path> knownInputs(const fs::path& map_dir, const fs::path& gt) {
   std::vector<fs::path> inputs = {gt};
   for (const std::string& name : mapInputFileNames()) {
     inputs.push_back(map_dir / name);
+  }
+  try {  // the texture images; a bad manifest is reported when it is read
+    for (const products::ManifestFile& f :
+         products::readManifest(map_dir / OutputLayout::kManifest).files) {
+      inputs.push_back(map_dir / f.path);
+    }
+  } catch (const Error&) {
   }
   return inputs;
 }
@@ -61,6 +73,25 @@ void checkOutputsSpareInputs(const std::vector<fs::path>& outputs,
       throw OutputError(what + " would overwrite the input file " + input.string() +
                         "; choose another --out");
     }
+  }
+}
+
+void checkOutputsSpareMapFiles(const std::vector<fs::path>& outputs, const fs::path& map_dir) {
+  for (std::size_t k = 0; k < outputs.size(); ++k) {
+    std::error_code ec;
+    const fs::path dir = outputs[k].parent_path().empty() ? "." : outputs[k].parent_path();
+    if (!fs::equivalent(dir, map_dir, ec) || ec) {
+      continue;
+    }
+    const std::string name = outputs[k].filename().string();
+    const LayoutEntry* e = OutputLayout::find(name);
+    if (e == nullptr || e->owner == LayoutEntry::Owner::kEvaluation) {
+      continue;
+    }
+    const std::string what =
+        k == 0 ? "--out " + outputs[k].string() : outputs[k].string() + " (written beside --out)";
+    throw OutputError(what + " would replace " + name +
+                      ", a planar-mapper output of the map folder; choose another --out");
   }
 }
 

@@ -19,10 +19,14 @@
 #include "pmap/eval/surface_files.h"
 #include "pmap/eval/surface_report.h"
 #include "pmap/eval/texture_quality.h"
+#include "pmap/products/output_folder.h"
+#include "pmap/products/output_layout.h"
 
 namespace pmap::eval {
 namespace fs = std::filesystem;
 using nlohmann::json;
+using products::OutputFolder;
+using products::OutputLayout;
 
 namespace {
 
@@ -39,7 +43,7 @@ std::optional<MapEvalArgs> parseArgs(int argc, const char* const* argv) {
   TCLAP::ValueArg<std::string> out("o", "out",
                                    "evaluation output (default ./eval.json); the OctoMap baselines "
                                    "octomap_5cm.bt and octomap_10cm.bt are written beside it",
-                                   false, "eval.json", "eval.json", cmd);
+                                   false, OutputLayout::kEvalJson, OutputLayout::kEvalJson, cmd);
   TCLAP::ValueArg<double> shift("", "texture-max-shift-px",
                                 "registration search of the poster texture score, texels either "
                                 "way (default 2)",
@@ -80,33 +84,33 @@ json labelJson(const LabelCheck& c) {
 }
 
 /// The surface keys, when the map has a surfaces.csv (it needs points.ply).
-void addSurfaceEvaluation(const MapEvalArgs& args, const GroundTruth& gt, const MapPoints* points,
-                          const Rigid2D& map_to_gt, json& doc) {
-  const fs::path csv = args.map_dir / "surfaces.csv";
-  if (!fs::exists(csv)) {
+void addSurfaceEvaluation(const OutputFolder& folder, const GroundTruth& gt,
+                          const MapPoints* points, const Rigid2D& map_to_gt, json& doc) {
+  if (!folder.has(OutputLayout::kSurfacesCsv)) {
     return;
   }
+  const fs::path csv = folder.file(OutputLayout::kSurfacesCsv);
   if (points == nullptr) {
-    throw InputError(csv.string() + ": needs points.ply beside it (the surface ids of the points)");
+    throw InputError(csv.string() + ": needs " + OutputLayout::kPointsPly +
+                     " beside it (the surface ids of the points)");
   }
   const std::vector<MapSurface> surfaces = readMapSurfaces(csv);
-  checkSurfaceIds(*points, surfaces, args.map_dir / "points.ply");
+  checkSurfaceIds(*points, surfaces, folder.file(OutputLayout::kPointsPly));
   const SurfaceEvalOptions options;
   addSurfaceKeys(evaluateSurfaces(gt, *points, surfaces, map_to_gt, options), options, doc);
 }
 
 /// The texture keys, when the map has a textures.csv and the world posters.
-void addTextureEvaluation(const MapEvalArgs& args, const GroundTruth& gt, const Rigid2D& map_to_gt,
-                          MapEvaluation& ev) {
-  const fs::path csv = args.map_dir / "textures.csv";
-  if (!fs::exists(csv) || gt.posters.empty()) {
+void addTextureEvaluation(const MapEvalArgs& args, const OutputFolder& folder,
+                          const GroundTruth& gt, const Rigid2D& map_to_gt, MapEvaluation& ev) {
+  if (!folder.has(OutputLayout::kTexturesCsv) || gt.posters.empty()) {
     return;
   }
   TextureQualityOptions options;
   options.max_shift_px = args.texture_max_shift_px;
-  const std::vector<MapTexture> textures = readMapTextures(csv);
+  const std::vector<MapTexture> textures = readMapTextures(folder.file(OutputLayout::kTexturesCsv));
   for (const MapTexture& t : textures) {
-    ev.images.push_back(args.map_dir / t.file);
+    ev.images.push_back(folder.file(t.file));  // only images the run wrote
   }
   for (const GtPoster& p : gt.posters) {
     ev.images.push_back(p.image);
@@ -173,14 +177,20 @@ MapEvaluation runEvaluation(const MapEvalArgs& args) {
     throw InputError(args.map_dir.string() +
                      ": not a directory (--map takes a planar-mapper output directory)");
   }
+  MapEvaluation ev;
+  const OutputFolder folder(args.map_dir);  // only the files of the run, as its manifest lists
+  if (!folder.hasManifest()) {
+    ev.warnings.push_back(folder.warning());
+  }
+  folder.verify();
   const GroundTruth gt = readGroundTruth(args.gt);
-  const poses::Trajectory estimated = readMapPoses(args.map_dir / "poses.txt");
+  const fs::path poses_txt = folder.file(OutputLayout::kPosesTxt);
+  const poses::Trajectory estimated = readMapPoses(poses_txt);
   const PoseErrors pe = comparePoses(estimated, gt.poses);
   if (pe.matched == 0) {
-    throw InputError((args.map_dir / "poses.txt").string() +
+    throw InputError(poses_txt.string() +
                      ": no pose overlaps the ground truth's time span (different run?)");
   }
-  MapEvaluation ev;
   json& doc = ev.doc;
   doc["map"] = args.map_dir.string();
   doc["gt"] = args.gt.string();
@@ -188,16 +198,15 @@ MapEvaluation runEvaluation(const MapEvalArgs& args) {
   doc["sigma_m"] = gt.sigma_m;
   doc["pose_ate_m"] = pe.ate_m;
   doc["pose"] = poseJson(pe);
-  const fs::path ply = args.map_dir / "points.ply";
   std::optional<MapPoints> points;
-  if (fs::exists(ply)) {
-    points = readMapPoints(ply);
+  if (folder.has(OutputLayout::kPointsPly)) {
+    points = readMapPoints(folder.file(OutputLayout::kPointsPly));
     doc["label_check"] = labelJson(checkLabels(gt, *points, pe.alignment));
   }
-  addSurfaceEvaluation(args, gt, points ? &*points : nullptr, pe.alignment, doc);
-  addTextureEvaluation(args, gt, pe.alignment, ev);
+  addSurfaceEvaluation(folder, gt, points ? &*points : nullptr, pe.alignment, doc);
+  addTextureEvaluation(args, folder, gt, pe.alignment, ev);
   if (points) {
-    ev.files = addBaselineKeys(args.map_dir, gt, *points, pe.alignment, BaselineOptions{}, doc);
+    ev.files = addBaselineKeys(folder, gt, *points, pe.alignment, BaselineOptions{}, doc);
   }
   return ev;
 }
@@ -215,7 +224,11 @@ int mapEvalMain(int argc, const char* const* argv) {
     const std::vector<fs::path> outputs =
         outputPaths(args->out, BaselineOptions{}.octomap_resolutions_m);
     checkOutputsSpareInputs(outputs, knownInputs(args->map_dir, args->gt));  // before any work
+    checkOutputsSpareMapFiles(outputs, args->map_dir);
     MapEvaluation ev = runEvaluation(*args);
+    for (const std::string& w : ev.warnings) {
+      std::fprintf(stderr, "map-eval: warning: %s\n", w.c_str());
+    }
     checkOutputsSpareInputs(outputs, ev.images);
     writeEvaluation(args->out, ev.files, ev.doc);
     if (!args->quiet) {

@@ -12,6 +12,7 @@
 
 #include "pmap/common/error.h"
 #include "pmap/eval/csv_row.h"
+#include "pmap/products/output_layout.h"
 
 namespace pmap::eval {
 namespace {
@@ -85,9 +86,7 @@ std::string btFileContent(octomap::OcTree& tree) {
 }
 
 std::string octomapFileName(double resolution_m) {
-  char cm[32];
-  std::snprintf(cm, sizeof cm, "%g", std::round(resolution_m * 1e4) / 100);  // 0.1 mm steps
-  return std::string("octomap_") + cm + "cm.bt";
+  return products::OutputLayout::octomapFile(resolution_m);
 }
 
 ScanOrigins readScanOrigins(const std::filesystem::path& csv) {

@@ -4,8 +4,10 @@
 #include <cstdio>
 
 #include "pmap/common/atomic_file.h"
+#include "pmap/common/interrupt.h"
 #include "pmap/products/map_gltf.h"
 #include "pmap/products/map_vrml.h"
+#include "pmap/products/output_layout.h"
 #include "pmap/products/texture_index.h"
 #include "pmap/report/report.h"
 #include "pmap/scene/map_scene.h"
@@ -14,6 +16,8 @@
 
 namespace pmap::mapper {
 namespace {
+
+using products::OutputLayout;
 
 // {min, p50, max} of the values; null when there are none.
 nlohmann::json range(std::vector<double> v) {
@@ -41,41 +45,45 @@ void writeFramesCsv(const std::filesystem::path& csv, const MapProducts& p) {
 
 }  // namespace
 
-void writeMapFiles(const std::filesystem::path& out, const MapProducts& p, const MappingResult& r,
-                   const OutputOptions& options) {
+void writeMapFiles(const std::filesystem::path& dir, const std::string& folder_name,
+                   const MapProducts& p, const MappingResult& r, const OutputOptions& options) {
+  using L = OutputLayout;
   const products::MapModel& m = p.model;
   const std::size_t surfaces = r.planar->map.surfaces.size();
   const std::size_t fine = m.fine.triangles.size();
-  products::writeMapVrml(out / "map.wrl", m,
+  products::writeMapVrml(dir / L::kMapWrl, m,
                          "planar-mapper map: " + std::to_string(surfaces) + " rectangles (" +
                              std::to_string(m.quads.size()) + " textured quads), " +
                              std::to_string(fine) + " fine triangles");
   const bool textured = p.texture.has_value();
   if (textured) {
-    products::writeTexturesCsv(out / "textures.csv", m);
-    writeFramesCsv(out / "frames.csv", p);
+    products::writeTexturesCsv(dir / L::kTexturesCsv, m);
+    writeFramesCsv(dir / L::kFramesCsv, p);
     // The geometry alone, for size comparisons (map-eval's planar_map).
-    products::writeMapGeometryGlb(out / "map-geometry.glb", m);
+    products::writeMapGeometryGlb(dir / L::kMapGeometryGlb, m);
   }
   const std::vector<std::uint8_t> glb = products::encodeMapGlb(m, textured);
-  writeFileAtomically(out / "map.glb", [&glb](std::ostream& os) {
+  writeFileAtomically(dir / L::kMapGlb, [&glb](std::ostream& os) {
     os.write(reinterpret_cast<const char*>(glb.data()), static_cast<std::streamsize>(glb.size()));
   });
+  throwIfInterrupted();
   std::vector<Eigen::Vector3f> points;
   const points::PointMap& map = r.points.map;
   points.reserve(map.size());
   for (const Eigen::Vector3d& x : map.xyz()) {
     points.push_back(x.cast<float>());
   }
-  const nlohmann::json info = {{"title", "planar-mapper: " + out.filename().string()},
+  const nlohmann::json info = {{"title", "planar-mapper: " + folder_name},
                                {"surfaces", surfaces},
                                {"fine triangles", fine},
                                {"points", map.size()},
                                {"textured", textured}};
-  viewer::writeViewerHtml(out / "viewer.html", glb, points, info);
+  viewer::writeViewerHtml(dir / L::kViewerHtml, glb, points, info);
+  throwIfInterrupted();
   scene::SceneOptions scene_options;
   scene_options.points = options.scene_points ? &map.xyz() : nullptr;
-  scene::writeMapScene(out / "map.3Dscene", *scene::buildMapScene(m, scene_options));
+  scene::writeMapScene(dir / L::kMapScene, *scene::buildMapScene(m, scene_options));
+  throwIfInterrupted();
 }
 
 std::vector<std::string> writeReportFiles(const std::filesystem::path& out, const MapProducts& p,

@@ -74,6 +74,30 @@ void PosesSection::load(config::SectionReader& r) {
   r.read("max_step_deg", motion.max_step_deg);
   r.read("max_coordinate_m", motion.max_coordinate_m);
   r.read("reset_after", motion.reset_after);
+  poses::LoopClosureOptions& l = loops;
+  r.read("loop_closure", l.enabled);
+  r.read("keyframe_distance_m", l.keyframe_distance_m);
+  r.read("keyframe_angle_deg", l.keyframe_angle_deg);
+  r.read("loop_min_path_m", l.min_loop_path_m);
+  r.read("loop_search_radius_m", l.search_radius_m);
+  r.read("loop_search_growth", l.search_growth);
+  r.read("loop_max_search_radius_m", l.max_search_radius_m);
+  r.read("loop_search_angle_deg", l.search_angle_deg);
+  r.read("loop_search_angle_growth_deg_per_m", l.search_angle_growth_deg_per_m);
+  r.read("loop_max_search_angle_deg", l.max_search_angle_deg);
+  r.read("loop_candidates_per_keyframe", l.candidates_per_keyframe);
+  r.read("loop_submap_path_m", l.submap_path_m);
+  r.read("loop_query_path_m", l.query_path_m);
+  r.read("loop_min_score", l.min_score);
+  r.read("loop_max_free_space_conflict", l.max_free_space_conflict);
+  r.read("loop_free_space_margin_m", l.free_space_margin_m);
+  r.read("loop_min_same_side_ratio", l.min_same_side_ratio);
+  r.read("loop_max_chi2", l.max_chi2);
+  r.read("loop_sigma_m", l.loop_sigma_m);
+  r.read("loop_sigma_deg", l.loop_sigma_deg);
+  r.read("odometry_sigma_fraction", l.odometry_sigma_fraction);
+  r.read("odometry_sigma_deg", l.odometry_sigma_deg);
+  r.read("loop_loss_scale", l.loop_loss_scale);
 }
 
 void OutputOptions::load(config::SectionReader& reader) {
@@ -223,6 +247,7 @@ MapperConfig loadMapperConfig(const std::filesystem::path& path) {
                    {},
                    {},
                    {},
+                   {},
                    {}};
   std::vector<std::string> errors;
   rejectUnknownSections(cfg.doc, errors);
@@ -230,6 +255,7 @@ MapperConfig loadMapperConfig(const std::filesystem::path& path) {
   PosesSection poses;
   loadSection(cfg, "Poses", poses, errors);
   cfg.motion = poses.motion;
+  cfg.loops = poses.loops;
   loadSection(cfg, "Output", cfg.output, errors);
   loadSection(cfg, "PlanarEM", cfg.planar_em, errors);
   OnlineEmSection online;

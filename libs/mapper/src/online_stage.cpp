@@ -1,12 +1,13 @@
 #include "pmap/mapper/online_stage.h"
 
 #include <chrono>
-#include <cstdio>
 #include <thread>
 
 #include "pmap/common/atomic_file.h"
+#include "pmap/common/interrupt.h"
 #include "pmap/products/map_model.h"
 #include "pmap/products/map_vrml.h"
+#include "pmap/products/output_layout.h"
 
 namespace pmap::mapper {
 
@@ -15,6 +16,7 @@ OnlineStage::OnlineStage(const em::PlanarEmOptions& em, const em::OnlineEmOption
     : em_(em, online), out_dir_(std::move(out_dir)), snapshot_every_(snapshot_every) {}
 
 void OnlineStage::addScan(const points::PointMap& map, std::size_t record) {
+  throwIfInterrupted();  // once per scan: SIGINT / SIGTERM stop the run here
   const points::ScanRecord& s = map.scans()[record];
   const std::vector<em::GridKey> keys = keyer_.keysOf(map, s);
   const std::vector<Eigen::Vector3d> pts(
@@ -36,15 +38,14 @@ void OnlineStage::addScan(const points::PointMap& map, std::size_t record) {
 }
 
 void OnlineStage::writeSnapshot(const points::PointMap& map) const {
-  const std::filesystem::path dir = out_dir_ / "snapshots";
-  ensureWritableDirectory(dir);
-  char name[64];
-  std::snprintf(name, sizeof name, "map_%06zu.wrl", history_.size());
+  const std::filesystem::path file =
+      out_dir_ / products::OutputLayout::snapshotFile(history_.size());
+  ensureWritableDirectory(file.parent_path());
   const em::PlanarMap m = em_.map();
   std::vector<Eigen::Vector3d> pts(map.xyz().begin(),
                                    map.xyz().begin() + static_cast<std::ptrdiff_t>(em_.points()));
   products::writeMapVrml(
-      dir / name, products::buildMapModel(m, pts, {}),
+      file, products::buildMapModel(m, pts, {}),
       "planar-mapper online map after " + std::to_string(history_.size()) + " structure scans");
 }
 

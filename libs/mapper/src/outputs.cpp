@@ -7,11 +7,14 @@
 #include <nlohmann/json.hpp>
 
 #include "pmap/common/atomic_file.h"
+#include "pmap/common/interrupt.h"
 #include "pmap/common/progress.h"
+#include "pmap/common/sha256.h"
 #include "pmap/mapper/map_outputs.h"
 #include "pmap/poses/poses_file.h"
 #include "pmap/products/json_file.h"
 #include "pmap/products/map_gltf.h"
+#include "pmap/products/output_layout.h"
 #include "pmap/products/planar_map_files.h"
 #include "pmap/products/point_files.h"
 #include "pmap/products/vrml.h"
@@ -19,6 +22,7 @@
 namespace pmap::mapper {
 namespace fs = std::filesystem;
 using nlohmann::json;
+using products::OutputLayout;
 
 namespace {
 
@@ -214,6 +218,17 @@ json summaryJson(const MapperArgs& args, const MappingResult& r, const StageCloc
                   {"beyond_max_coordinate", poses.motion.too_far},
                   {"step_beyond_limits", poses.motion.too_fast}}},
                 {"odometry_resets", poses.motion.resets}};
+  if (poses.loops) {
+    const poses::LoopClosureStats& l = *poses.loops;
+    s["poses"]["loop_closure"] = {{"keyframes", l.keyframes},
+                                  {"candidates", l.candidates},
+                                  {"rejected_by_score", l.rejected_match},
+                                  {"rejected_by_free_space", l.rejected_free_space},
+                                  {"rejected_by_chi2", l.rejected_chi2},
+                                  {"accepted", l.accepted},
+                                  {"search_s", l.search_s},
+                                  {"solve_s", l.solve_s}};
+  }
   s["duration_s"] = r.input.duration();
   s["mode"] = toString(r.kind);
   s["warnings"] = r.warnings;
@@ -266,44 +281,57 @@ void writeRawMapGlb(const fs::path& path, const PointsResult& r) {
 }  // namespace
 
 void writeOutputs(const MapperConfig& config, const MapperArgs& args, const MappingResult& r,
-                  const MapProducts* products, StageClock& clock) {
+                  const MapProducts* products, StageClock& clock, const fs::path& dir) {
   auto in_write = clock.enter(Stage::kWrite);
   ProgressLine progress("planar-mapper: writing", ProgressOptions{!args.quiet, 1.0, true});
-  ensureWritableDirectory(args.out);
-  writeTextFileAtomically(args.out / "effective.ini",
+  using L = OutputLayout;
+  writeTextFileAtomically(dir / L::kEffectiveIni,
                           config.effective->toIniText({"effective configuration of planar-mapper",
                                                        "source: " + config.doc.origin()}));
   if (!r.poses.trajectory.empty()) {
-    poses::writePosesFile(args.out / "poses.txt", r.poses.trajectory);
-    poses::writeTumFile(args.out / "poses.tum", r.poses.trajectory);
+    poses::writePosesFile(dir / L::kPosesTxt, r.poses.trajectory);
+    poses::writeTumFile(dir / L::kPosesTum, r.poses.trajectory);
   }
+  throwIfInterrupted();
   if (!args.poses_only) {
-    products::writeScansCsv(args.out / "scans.csv", r.points.map);
+    products::writeScansCsv(dir / L::kScansCsv, r.points.map);
     products::writePointsPly(
-        args.out / "points.ply", r.points.map,
+        dir / L::kPointsPly, r.points.map,
         r.planar ? products::surfaceIdsOfPoints(r.planar->map) : std::vector<int>{});
+    throwIfInterrupted();
     if (config.output.raw_map) {
-      writeRawMap(args.out / "raw.wrl", r.points);
-      writeRawMapGlb(args.out / "raw.glb", r.points);
+      writeRawMap(dir / L::kRawWrl, r.points);
+      writeRawMapGlb(dir / L::kRawGlb, r.points);
+      throwIfInterrupted();
     }
     if (r.planar && !r.planar->online.empty()) {
-      writeOnlineCsv(args.out / "online.csv", r.planar->online);
+      writeOnlineCsv(dir / L::kOnlineCsv, r.planar->online);
     }
     if (r.planar) {
-      products::writeSurfacesCsv(args.out / "surfaces.csv", r.planar->map.surfaces);
+      products::writeSurfacesCsv(dir / L::kSurfacesCsv, r.planar->map.surfaces);
     }
     if (products != nullptr) {
-      writeMapFiles(args.out, *products, r, config.output);
+      writeMapFiles(dir, args.out.filename().string(), *products, r, config.output);
     }
   }
   json summary = summaryJson(args, r, clock);
   if (products != nullptr) {
     summary["texture"] = textureSummary(config, *products);
-    summary["report_warnings"] = writeReportFiles(args.out, *products, r, summary);
+    summary["report_warnings"] = writeReportFiles(dir, *products, r, summary);
     summary["timing_s"] = timingJson(clock);  // the report included
   }
-  products::writeJsonFile(args.out / "summary.json", summary);
+  products::writeJsonFile(dir / L::kSummary, summary);
   progress.finish();
+}
+
+products::OutputManifest manifestHeader(const MapperConfig& config,
+                                        const std::vector<std::string>& command) {
+  products::OutputManifest m;
+  m.program = std::string("planar-mapper ") + PMAP_VERSION;
+  m.command = command;
+  m.config_sha256 = sha256Hex(config.effective->toIniText());
+  m.written_utc = products::utcNow();
+  return m;
 }
 
 }  // namespace pmap::mapper

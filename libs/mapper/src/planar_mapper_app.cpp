@@ -5,12 +5,15 @@
 #include <memory>
 
 #include "pmap/common/error.h"
+#include "pmap/common/interrupt.h"
 #include "pmap/common/text.h"
 #include "pmap/input/label_inventory.h"
 #include "pmap/mapper/map_products.h"
 #include "pmap/mapper/output_guard.h"
 #include "pmap/mapper/outputs.h"
 #include "pmap/mapper/pipeline.h"
+#include "pmap/mapper/staged_outputs.h"
+#include "pmap/products/output_layout.h"
 
 namespace pmap::mapper {
 namespace {
@@ -53,6 +56,12 @@ void printSummary(const MapperArgs& args, const MappingResult& result) {
                  "yaw %.2f deg -> %s\n",
                  trajectory.size(), toString(result.poses.source), pathLength(trajectory), last.x,
                  last.y, last.yaw * 180.0 / M_PI, args.out.c_str());
+    if (const auto& loops = result.poses.loops) {
+      std::fprintf(stderr,
+                   "planar-mapper: loop closure: %zu keyframes, %zu candidates, %zu loops "
+                   "accepted\n",
+                   loops->keyframes, loops->candidates, loops->accepted);
+    }
     return;
   }
   const PointsResult& points = result.points;
@@ -66,9 +75,50 @@ void printSummary(const MapperArgs& args, const MappingResult& result) {
   }
 }
 
+struct RunOutcome {
+  MappingResult result;
+  std::optional<MapProducts> products;
+};
+
+/// Maps and writes every output into a staging folder beside --out, swapped
+/// in as a whole at the end with the run's manifest (staged_outputs.h).
+/// SIGINT / SIGTERM / SIGHUP throw Interrupted: the staging folder is
+/// removed, --out stays as it was.
+RunOutcome mapAndWrite(const MapperConfig& config, const MapperArgs& args,
+                       const std::vector<std::string>& command, StageClock& clock, LiveView* live) {
+  InterruptGuard guard;
+  StagedOutputs staged(args.out);
+  MapperArgs staged_args = args;
+  staged_args.out = staged.dir();  // everything is written there, snapshots included
+  if (args.snapshot_every > 0 && !args.quiet) {
+    std::fprintf(stderr, "planar-mapper: snapshots go to %s until the run ends\n",
+                 (staged.dir() / products::OutputLayout::kSnapshotsDir).c_str());
+  }
+  RunOutcome outcome;
+  MappingResult& result = outcome.result;
+  result = runPipeline(config, staged_args, clock, live);
+  result.warnings.insert(result.warnings.begin(), staged.warnings().begin(),
+                         staged.warnings().end());
+  result.warnings.insert(result.warnings.begin(), config.warnings.begin(), config.warnings.end());
+  throwIfInterrupted();
+  if (result.planar) {
+    auto in_texture = clock.enter(Stage::kTexture);
+    outcome.products = buildMapProducts(config, args, result);
+  }
+  throwIfInterrupted();
+  const MapProducts* products = outcome.products ? &*outcome.products : nullptr;
+  writeOutputs(config, args, result, products, clock, staged.dir());
+  throwIfInterrupted();  // the last chance: from here on the run completes
+  for (std::string& note : staged.commit(manifestHeader(config, command))) {
+    result.warnings.push_back(std::move(note));
+  }
+  return outcome;
+}
+
 }  // namespace
 
 bool PlanarMapperApp::initialize(int argc, const char* const* argv) {
+  command_.assign(argv, argv + argc);
   args_ = parseMapperArgs(argc, argv);
   if (!args_) {
     return false;
@@ -98,19 +148,12 @@ void PlanarMapperApp::run() {
     options.hold_s = args_->gui_hold_s;
     live = std::make_unique<LiveView>(options);
   }
-  MappingResult result = runPipeline(*config_, *args_, clock, live.get());
-  result.warnings.insert(result.warnings.begin(), config_->warnings.begin(),
-                         config_->warnings.end());
-  std::optional<MapProducts> products;
-  if (result.planar) {
-    auto in_texture = clock.enter(Stage::kTexture);
-    products = buildMapProducts(*config_, *args_, result);
-  }
-  writeOutputs(*config_, *args_, result, products ? &*products : nullptr, clock);
+  RunOutcome outcome = mapAndWrite(*config_, *args_, command_, clock, live.get());
+  const MappingResult& result = outcome.result;
+  const std::optional<MapProducts>& products = outcome.products;
   if (live) {
     live->finish(products ? products->model : products::MapModel{}, result.points.map);
   }
-
   for (const std::string& w : result.warnings) {  // also with --quiet
     std::fprintf(stderr, "planar-mapper: warning: %s\n", w.c_str());
   }
@@ -131,6 +174,12 @@ int planarMapperMain(int argc, const char* const* argv) {
     }
     app.run();
     return 0;
+  } catch (const Interrupted& e) {
+    std::fprintf(stderr,
+                 "planar-mapper: %s: stopped; the previous outputs are unchanged, the staging "
+                 "folder removed\n",
+                 e.what());
+    return reraiseWithDefaultAction(e.signalNumber());
   } catch (const Error& e) {
     for (const std::string& line : splitLines(e.what())) {
       std::fprintf(stderr, "planar-mapper: error: %s\n", line.c_str());

@@ -6,6 +6,7 @@
 #include <chrono>
 
 #include "pmap/common/error.h"
+#include "pmap/common/interrupt.h"
 #include "pmap/common/progress.h"
 #include "pmap/input/label_inventory.h"
 #include "pmap/input/rawlog_reader.h"
@@ -52,6 +53,7 @@ class RawlogRun {
     Pacer pacer(args_.playback_rate);
     input::InputStep step;
     for (;;) {
+      throwIfInterrupted();  // SIGINT / SIGTERM: stop between input steps (staged_outputs.h)
       bool more = false;
       {
         auto in_read = clock_.enter(Stage::kRead);
@@ -85,7 +87,7 @@ class RawlogRun {
   poses::PoseStage makePoseStage() const {
     auto tracker = makeIcpTracker(config_);  // validates the ICP sections in every mode
     if (args_.poses.empty()) {
-      return poses::PoseStage(std::move(tracker), config_.motion);
+      return poses::PoseStage(std::move(tracker), config_.motion, config_.loops);
     }
     return poses::PoseStage(poses::readPosesFile(args_.poses), config_.motion);
   }
@@ -185,6 +187,9 @@ class RawlogRun {
     placer_.drain(stage.trajectory(), true);
     result_.poses.trajectory = stage.trajectory();
     result_.poses.motion = stage.gate().stats();
+    if (const poses::LoopClosingBackEnd* loops = stage.loops()) {
+      result_.poses.loops = loops->stats();
+    }
     const std::string dropped = stage.gate().summary(
         args_.poses.empty() ? "odometry readings or increments" : "given poses");
     if (!dropped.empty()) {

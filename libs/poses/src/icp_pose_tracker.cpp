@@ -26,10 +26,12 @@ IcpPoseTracker::IcpPoseTracker(const mrpt::config::CConfigFileBase& config)
 
 IcpPoseTracker::~IcpPoseTracker() = default;
 
+mrpt::math::TPose3D IcpPoseTracker::currentPose() const {
+  return impl_->builder.getCurrentPoseEstimation()->getMeanVal().asTPose();
+}
+
 void IcpPoseTracker::recordPose(double t) {
-  const mrpt::math::TPose3D pose =
-      impl_->builder.getCurrentPoseEstimation()->getMeanVal().asTPose();
-  if (!trajectory_.append(t, pose)) {
+  if (!trajectory_.append(t, currentPose())) {
     ++stats_.non_monotonic;
   }
 }

@@ -1,6 +1,7 @@
 #include "pmap/poses/pose_stage.h"
 
 #include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/system/datetime.h>
 
@@ -49,8 +50,11 @@ MotionLimits withoutReset(MotionLimits limits) {
 
 }  // namespace
 
-PoseStage::PoseStage(std::unique_ptr<IcpPoseTracker> tracker, MotionLimits limits)
-    : tracker_(std::move(tracker)), gate_(limits) {}
+PoseStage::PoseStage(std::unique_ptr<IcpPoseTracker> tracker, MotionLimits limits,
+                     LoopClosureOptions loops)
+    : tracker_(std::move(tracker)),
+      slam_(loops.enabled ? std::make_unique<LoopClosingStage>(loops, *tracker_) : nullptr),
+      gate_(limits) {}
 
 PoseStage::PoseStage(const Trajectory& given, MotionLimits limits)
     : gate_(withoutReset(limits)), given_(gated(given, gate_)) {}
@@ -63,7 +67,20 @@ PoseStats PoseStage::stats() const {
 }
 
 const Trajectory& PoseStage::trajectory() const {
+  if (slam_) {
+    return slam_->trajectory();
+  }
   return tracker_ ? tracker_->trajectory() : given_;
+}
+
+// A pose-laser scan: to ICP, then (with loop closure) to the pose graph.
+void PoseStage::processPoseScan(const mrpt::obs::CObservation::Ptr& obs) {
+  tracker_->processObservation(obs, false);
+  if (slam_) {
+    if (const auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(obs)) {
+      slam_->onScan(mrpt::Clock::toDouble(obs->timestamp), scan);
+    }
+  }
 }
 
 void PoseStage::processOdometry(const mrpt::obs::CObservation::Ptr& obs) {
@@ -118,7 +135,9 @@ mrpt::obs::CActionCollection::Ptr PoseStage::gatedAction(
     if (!gate_.increment(dt, pose3(step))) {
       return nullptr;
     }
-    auto timed = std::make_shared<mrpt::obs::CActionRobotMovement2D>(*move);
+    // Timed in place, not copied: actions deserialized from old rawlogs can
+    // hold enum and bool fields MRPT left unset, which a copy would read.
+    auto timed = std::dynamic_pointer_cast<mrpt::obs::CActionRobotMovement2D>(a.get_ptr());
     timed->timestamp = mrpt::Clock::fromDouble(t);
     out->insertPtr(timed);
   }
@@ -139,6 +158,14 @@ void PoseStage::processFrame(const input::InputStep& step) {
   if (!for_icp.empty() || action) {
     tracker_->processFrame(action, for_icp);
   }
+  if (slam_) {
+    for (const auto& item : step.observations) {
+      const auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(item.obs);
+      if (item.roles.pose_laser && scan) {
+        slam_->onScan(frame_t, scan);
+      }
+    }
+  }
 }
 
 void PoseStage::process(const input::InputStep& step, const std::string& file) {
@@ -148,14 +175,17 @@ void PoseStage::process(const input::InputStep& step, const std::string& file) {
   try {
     if (step.sensory_frame) {
       processFrame(step);
-      return;
-    }
-    for (const auto& item : step.observations) {
-      if (item.roles.odometry) {
-        processOdometry(item.obs);
-      } else if (item.roles.pose_laser) {
-        tracker_->processObservation(item.obs, false);
+    } else {
+      for (const auto& item : step.observations) {
+        if (item.roles.odometry) {
+          processOdometry(item.obs);
+        } else if (item.roles.pose_laser) {
+          processPoseScan(item.obs);
+        }
       }
+    }
+    if (slam_) {
+      slam_->sync();
     }
   } catch (const Error&) {
     throw;

@@ -8,12 +8,11 @@
 namespace pmap::products {
 
 std::string textureRelativePath(std::int32_t surface_id) {
-  return std::string(kTextureDir) + "/surface_" + std::to_string(surface_id) + ".png";
+  return OutputLayout::textureFile(surface_id);
 }
 
 std::string textureRelativePath(std::int32_t surface_id, std::int32_t tile) {
-  return std::string(kTextureDir) + "/surface_" + std::to_string(surface_id) + "_" +
-         std::to_string(tile) + ".png";
+  return OutputLayout::textureFile(surface_id, tile);
 }
 
 std::vector<std::uint8_t> encodePng(const cv::Mat& image) {

@@ -6,15 +6,18 @@
 
 #include "pmap/common/error.h"
 #include "pmap/common/text.h"
+#include "pmap/products/output_layout.h"
 #include "pmap/report/em_charts.h"
 
 namespace pmap::report {
 namespace {
 
+constexpr const char* kSummary = products::OutputLayout::kSummary;
+
 double numberAt(const nlohmann::json& entry, const char* key, std::size_t index) {
   const auto it = entry.find(key);
   if (it == entry.end() || !it->is_number()) {
-    throw InputError("summary.json: history[" + std::to_string(index) + "]: '" + key +
+    throw InputError(std::string(kSummary) + ": history[" + std::to_string(index) + "]: '" + key +
                      "' is missing or not a number");
   }
   return it->get<double>();
@@ -39,12 +42,13 @@ std::vector<IterationRow> historyFromSummary(const nlohmann::json& summary) {
     return rows;
   }
   if (!it->is_array()) {
-    throw InputError("summary.json: 'history' is not an array");
+    throw InputError(std::string(kSummary) + ": 'history' is not an array");
   }
   for (std::size_t i = 0; i < it->size(); ++i) {
     const nlohmann::json& e = (*it)[i];
     if (!e.is_object()) {
-      throw InputError("summary.json: history[" + std::to_string(i) + "] is not an object");
+      throw InputError(std::string(kSummary) + ": history[" + std::to_string(i) +
+                       "] is not an object");
     }
     IterationRow r;
     r.iteration = static_cast<int>(numberAt(e, "iteration", i));

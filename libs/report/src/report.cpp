@@ -1,13 +1,13 @@
 #include "pmap/report/report.h"
 
-#include "pmap/products/texture_png.h"
-
 #include <algorithm>
 #include <opencv2/imgcodecs.hpp>
 #include <system_error>
 
 #include "pmap/common/atomic_file.h"
 #include "pmap/common/error.h"
+#include "pmap/products/output_layout.h"
+#include "pmap/products/texture_png.h"
 #include "pmap/report/map_views.h"
 #include "pmap/report/report_html.h"
 
@@ -16,10 +16,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr const char* kPerspective = "map_perspective.png";
-constexpr const char* kTop = "map_top.png";
-constexpr const char* kIterations = "em_iterations.png";
-constexpr const char* kPerScan = "em_per_scan.png";
+using products::OutputLayout;
+constexpr const char* kPerspective = OutputLayout::kReportPerspective;
+constexpr const char* kTop = OutputLayout::kReportTop;
+constexpr const char* kIterations = OutputLayout::kReportIterations;
+constexpr const char* kPerScan = OutputLayout::kReportPerScan;
 
 /// Collects what the report writes and says.
 struct ReportWriter {
@@ -100,15 +101,15 @@ ReportResult writeReport(const fs::path& dir, const ReportInputs& inputs,
     throw ConfigError("report options: " + rule);
   }
   ReportWriter w;
-  w.dir = dir / "report";
+  w.dir = dir / OutputLayout::kReportDir;
   ensureWritableDirectory(w.dir);
   w.result.dir = w.dir;
   addMapViews(w, inputs, options);
   addCharts(w, inputs, options);
   removeStalePictures(w);
-  writeTextFileAtomically(w.dir / "report.html",
+  writeTextFileAtomically(w.dir / OutputLayout::kReportHtml,
                           reportHtml(inputs.summary, w.images, w.result.warnings));
-  w.result.files.push_back("report.html");
+  w.result.files.push_back(OutputLayout::kReportHtml);
   return w.result;
 }
 

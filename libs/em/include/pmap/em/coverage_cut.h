@@ -44,18 +44,22 @@ std::optional<CoverageCut> coverageCut(const std::vector<Eigen::Vector3d>& point
 /// corner): the members of the smaller surface (`other_members`, rectangle
 /// `other`) that the larger one (`big`) takes so that it runs through the
 /// corner: those within big's width at its end next to `other`. The width
-/// comes from big's points `big_extent` within 1 m of that end (a rectangle
-/// turned by a fraction of a degree would narrow it there), widened by
-/// `sigma`. Empty when they do not lie on big's plane (fewer than 90 %
-/// within 2.5 sigma: a door behind its wall is no L) or beyond its end (more
-/// than 10 % beside it: a room's ceiling next to a corridor's is no L), or
-/// when `other` does not reach across big's axis at least 0.5 m beyond its
-/// width (two collinear pieces of one corridor are no L).
+/// comes from big's points `big_extent` within corner_end_window_m (1 m) of
+/// that end (a rectangle turned by a fraction of a degree would narrow it
+/// there), widened by `sigma`. Empty when they do not lie on big's plane
+/// (fewer than corner_on_plane_percent (90 %) within grow_sigmas (2.5)
+/// sigma: a door behind its wall is no L) or beyond its end (more than
+/// corner_beside_percent (10 %) beside it: a room's ceiling next to a
+/// corridor's is no L), or when `other` does not reach across big's axis at
+/// least corner_min_leg_beyond_m (0.5 m) beyond its width (two collinear
+/// pieces of one corridor are no L). The numbers: `rules`
+/// (selection_rules.h).
 std::vector<std::int32_t> cornerTransfer(const std::vector<Eigen::Vector3d>& points,
                                          const Rectangle& big,
                                          const std::vector<std::int32_t>& big_extent,
                                          const Rectangle& other,
                                          const std::vector<std::int32_t>& other_members,
-                                         double sigma);
+                                         double sigma,
+                                         const SelectionRules& rules = SelectionRules{});
 
 }  // namespace pmap::em

@@ -14,6 +14,7 @@
 #include "pmap/em/planar_em_options.h"
 #include "pmap/em/point_grid.h"
 #include "pmap/em/responsibilities.h"
+#include "pmap/em/selection_policy.h"
 #include "pmap/em/split_proposals.h"
 #include "pmap/em/surface.h"
 
@@ -57,11 +58,41 @@ class ModelSelector {
   int splitSurfaces(std::vector<Surface>& surfaces, Responsibilities& resp, std::int32_t& next_id);
   int seed(std::vector<Surface>& surfaces, const Responsibilities& resp, std::int32_t& next_id);
 
-  /// Fits `rect` to `members` and checks it is a valid surface.
-  bool acceptablePart(const std::vector<std::int32_t>& members, Rectangle& rect) const;
-  /// Support, rows seen and planarity of a fitted surface.
-  bool validSurface(const std::vector<std::int32_t>& members, const Rectangle& rect) const;
-  double emptyCost(const std::vector<std::int32_t>& members, const Rectangle& rect) const;
+  /// The surfaces to remove in one pass: invalid ones, and those whose
+  /// removal raises the log posterior, without two sharing a point.
+  std::vector<char> removals(const std::vector<Surface>& surfaces, const Responsibilities& resp);
+  struct PairChange {
+    double priority;  ///< fusions first, then by gain
+    std::size_t j, k;
+    std::vector<Rectangle> replacement;  ///< one rectangle (fusion) or two (re-cut)
+  };
+  /// The fusion or re-cut of surfaces j and k, when it is to be made.
+  std::optional<PairChange> pairChange(const std::vector<Surface>& surfaces,
+                                       const std::vector<std::vector<std::int32_t>>& members,
+                                       const Responsibilities& resp, std::size_t j,
+                                       std::size_t k) const;
+  /// Log-likelihood change (eq. 30's first term) of replacing surfaces j
+  /// and k by `rects`.
+  double pairLikelihoodChange(const std::vector<Surface>& surfaces, const Responsibilities& resp,
+                              std::size_t j, std::size_t k,
+                              const std::vector<Rectangle>& rects) const;
+  /// Makes the non-overlapping `changes` (best first); returns how many.
+  int applyPairChanges(std::vector<PairChange> changes, std::vector<Surface>& surfaces,
+                       std::int32_t& next_id) const;
+  /// The candidate replacements of surface j: residual splits, the best
+  /// coverage cut (two parts) or trim (one part, unless j was trimmed).
+  std::vector<std::vector<std::vector<std::int32_t>>> splitOptions(
+      const Surface& s, const std::vector<std::int32_t>& members, const Responsibilities& resp,
+      std::size_t j) const;
+  /// The best replacement of surface j among `options` (empty: none gains).
+  std::vector<Rectangle> bestSplit(
+      std::size_t j, const Surface& s, const std::vector<std::int32_t>& members,
+      const std::vector<std::vector<std::vector<std::int32_t>>>& options,
+      const Responsibilities& resp) const;
+
+  /// Rectangle area (m^2) that `members` leave empty.
+  double empty(const std::vector<std::int32_t>& members, const Rectangle& rect) const;
+  Measurements measurements() const { return {points_, rows_}; }
   struct Recut {
     SplitProposal parts;
     std::vector<Rectangle> rects;
@@ -90,7 +121,6 @@ class ModelSelector {
   PointGrid grid_;
   bool isTabu(const Rectangle& r) const;
 
-  static constexpr int kTabuRounds = 3;
   int round_ = 0;
   std::deque<std::pair<int, Rectangle>> tabu_;  ///< (round, rectangle) of recent removals
   /// Points of surfaces removed as curved (a bin): not seeded again.

@@ -29,8 +29,8 @@ struct IterationRecord {
   SelectionChanges changes;         ///< model selection made before this iteration's E-step
 };
 
-/// kOnline: the map of the online EM (updated scan by scan, no termination).
-enum class Termination { kConverged, kMaxIterations, kNoPoints, kOnline };
+/// How the offline EM ended (the online EM has no end: OnlineResult).
+enum class Termination { kConverged, kMaxIterations, kNoPoints };
 const char* toString(Termination t);
 
 struct PlanarMap {

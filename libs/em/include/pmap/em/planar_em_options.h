@@ -5,22 +5,48 @@
 #include <cstdint>
 #include <string>
 
+#include "pmap/em/selection_rules.h"
+
 namespace pmap::em {
 
 struct PlanarEmOptions {
+  // Every threshold of the EM and its model selection lives here (the fixed
+  // ones in `rules`), shared by the offline and the online EM; the online
+  // EM's work bounds are OnlineEmOptions. Per field: units, range, and why
+  // this value ("measured with": the figures of doc/RESULTS.md use it).
+
   // Measurement model, eqs. (9)-(11).
-  double sigma_m = 0.02;  ///< range noise sigma (m), > 0
-  double z_max_m = 30.0;  ///< sensor range of the uniform outlier density (m), > sigma
+  /// Range noise sigma (m), > 0: the laser's specification (2 cm; 5 cm for
+  /// the paper's SICK PLS, config/sigma5.ini).
+  double sigma_m = 0.02;
+  /// Sensor range of the uniform outlier density (m), > 3 sigma: the
+  /// laser's maximum range. With sigma it sets the outlier distance
+  /// sigma sqrt(L*) (7.2 cm at 2 cm, 16.5 cm at 5 cm).
+  double z_max_m = 30.0;
 
   // Model selection, eq. (30).
-  double kappa = 200.0;                   ///< log-posterior penalty per surface (nats), >= 0
-  int selection_interval = 5;             ///< run model selection every K iterations, >= 1
-  int max_new_per_round = 20;             ///< cap of new surfaces seeded per round, >= 1
-  double seed_outlier_probability = 0.5;  ///< e_i* above which a point is poorly explained
-  int min_support = 60;  ///< fewest points a (new or kept) surface must explain, >= 3
-  /// Fewest distinct rows (scans) a surface's points must come from. One
-  /// vertical scan is itself an exact plane; a surface seen by only one or two
-  /// scans is that artefact, not a wall. Used when the input carries rows.
+  /// Log-posterior penalty per surface (nats), >= 0: a point on a plane
+  /// gains L*/2 = 6.4 nats over the outlier class at sigma 2 cm, so a
+  /// surface must explain about 30 points perfectly to pay for itself; small
+  /// enough for a door, large enough that noise does not buy surfaces.
+  double kappa = 200.0;
+  /// Run model selection every K iterations, >= 1: the M-step settles the
+  /// surfaces between rounds, so a round judges converged geometry.
+  int selection_interval = 5;
+  /// Cap of new surfaces seeded per round, >= 1: a work bound (the worlds
+  /// of doc/RESULTS.md have at most 22 surfaces to find).
+  int max_new_per_round = 20;
+  /// e_i* (outlier responsibility) above which a point is poorly explained
+  /// and may seed, in (0, 1): more likely an outlier than not (section IV-C).
+  double seed_outlier_probability = 0.5;
+  /// Fewest points a (new or kept) surface must explain, >= 3: with kappa,
+  /// a surface of fewer points is clutter (a chair leg, a strip of a door
+  /// frame) better left to the fine triangles.
+  int min_support = 60;
+  /// Fewest distinct rows (scans) a surface's points must come from, >= 1.
+  /// One vertical scan is itself an exact plane; a surface seen by only one
+  /// or two scans is that artefact, not a wall. Used when the input carries
+  /// rows.
   int min_rows = 5;
   /// How model selection scores a change: kHard (default) scores each point
   /// by its most likely cause, max(s*, max_j s_ij); kSoft by the mixture
@@ -30,36 +56,60 @@ struct PlanarEmOptions {
   enum class Scoring { kHard, kSoft };
   Scoring selection_scoring = Scoring::kHard;
   /// A model-selection change is made only when it raises the log posterior
-  /// by more than this (nats): hysteresis against changes that the next
-  /// M-step undoes (a trim of a few centimetres that boundary points regrow).
+  /// by more than this (nats), >= 0: hysteresis against changes that the
+  /// next M-step undoes (a trim of a few centimetres that boundary points
+  /// regrow); 10 nats are one or two points' worth at sigma 2 cm.
   double min_gain = 10.0;
   /// A surface whose points bend with a smaller radius (a bin, a column) is
-  /// not a plane (planarity.h) and is not kept (m).
+  /// not a plane (planarity.h) and is not kept (m), > 0: a wall does not
+  /// bend measurably, a bin or a column bends with a radius well under 1 m.
   double min_curvature_radius_m = 1.0;
-  // Fusion of surfaces that are the same plane.
-  double fuse_angle_deg = 10.0;  ///< normals closer than this may fuse
-  double fuse_offset_m = 0.10;   ///< planes closer than this (at each other's centres)
-  double fuse_gap_m = 0.5;       ///< rectangles closer than this (in the plane)
+  // Fusion of surfaces that are the same plane: candidate pairs only (the
+  // posterior decides); loose enough for two halves of one wall fitted
+  // from noisy, partial views.
+  double fuse_angle_deg = 10.0;  ///< normals closer than this may fuse (deg)
+  double fuse_offset_m = 0.10;   ///< planes closer than this at each other's centres (m)
+  double fuse_gap_m = 0.5;       ///< rectangles closer than this in the plane (m)
   // Split tests (beyond the paper).
-  double split_cell_m = 0.15;        ///< patch size of the residual / coverage grids (m)
-  double split_min_offset_m = 0.04;  ///< a patch's mean residual must exceed this (m)
-  double empty_area_cost = 20.0;     ///< prior cost of rectangle area no point covers (nats/m^2)
+  /// Patch size of the residual / coverage grids (m), > 0: about two scan
+  /// spacings (8 cm between scans in the simulated worlds), so a patch that
+  /// was seen has no empty cell.
+  double split_cell_m = 0.15;
+  /// A patch's mean residual must exceed this (m), > 0: 4 cm separates a
+  /// door recessed by 10 cm from its wall at sigma 5 cm, yet not a wall's
+  /// unevenness.
+  double split_min_offset_m = 0.04;
+  /// Prior cost of rectangle area no point covers (nats/m^2), >= 0:
+  /// 10 m^2 of empty rectangle cost as much as a surface (kappa), so the box
+  /// of an L-shaped ceiling is cut in two, while a few empty grid cells
+  /// (gaps between scans, 0.02 m^2 each) cost less than a nat.
+  double empty_area_cost = 20.0;
+  /// The fixed thresholds of model selection (not read from the ini), each
+  /// with its reason: selection_rules.h.
+  SelectionRules rules;
 
   // Iterations and convergence.
-  int max_iterations = 200;             ///< hard cap, >= 1
-  double convergence_tolerance = 1e-6;  ///< relative change of the log posterior
+  int max_iterations = 200;  ///< hard cap, >= 1: a bound; runs converge well before it
+  /// Relative change of the log posterior below which an iteration counts
+  /// as converged (1e-6: far below a point's worth of nats).
+  double convergence_tolerance = 1e-6;
   /// ... or an absolute change below this (nats): the hard rectangle fit can
   /// settle into a two-state flip of one boundary point (a fraction of a nat).
   double convergence_absolute_nats = 1.0;
-  int convergence_patience = 3;  ///< iterations in a row below the tolerance
+  /// Iterations in a row below the tolerance, >= 1: one quiet iteration
+  /// after a model-selection round is not yet convergence.
+  int convergence_patience = 3;
   /// Surfaces whose terms fall below this fraction of the outlier term are
-  /// skipped in the E-step (their responsibility is below it).
+  /// skipped in the E-step (their responsibility is below it), in (0, 1):
+  /// 1e-6 changes no weight that matters and bounds the work per point.
   double responsibility_tolerance = 1e-6;
-  bool bounded = true;            ///< false: unbounded planes (property tests)
-  bool model_selection = true;    ///< false: J fixed to the initial surfaces
-  double fine_max_edge_m = 0.15;  ///< longest edge of a fine triangle (m)
-  std::uint64_t seed = 1;         ///< random choices (seed selection)
-  int threads = 1;                ///< >= 1; results do not depend on it
+  bool bounded = true;          ///< false: unbounded planes (property tests)
+  bool model_selection = true;  ///< false: J fixed to the initial surfaces
+  /// Longest edge of a fine triangle (m), > 0: a few beam spacings, so
+  /// triangles bridge neighbouring outliers but not gaps between objects.
+  double fine_max_edge_m = 0.15;
+  std::uint64_t seed = 1;  ///< random choices (seed selection)
+  int threads = 1;         ///< >= 1; results do not depend on it
 
   bool validate(std::string* why) const;
 };

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "pmap/em/rectangle.h"
+#include "pmap/em/selection_rules.h"
 
 namespace pmap::em {
 
@@ -24,7 +25,9 @@ Planarity measurePlanarity(const std::vector<Eigen::Vector3d>& points,
                            const std::vector<std::int32_t>& members, const Rectangle& rect);
 
 /// True when the points bend with a radius below `min_radius_m` and the bend
-/// explains at least 25 % of the residual variance.
-bool isCurved(const Planarity& p, double min_radius_m);
+/// explains at least `min_variance_explained` of the residual variance
+/// (SelectionRules::curved_min_variance_explained).
+bool isCurved(const Planarity& p, double min_radius_m,
+              double min_variance_explained = SelectionRules{}.curved_min_variance_explained);
 
 }  // namespace pmap::em

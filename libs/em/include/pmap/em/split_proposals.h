@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "pmap/em/rectangle.h"
+#include "pmap/em/selection_rules.h"
 
 namespace pmap::em {
 
@@ -24,16 +25,19 @@ struct SplitProposal {
 };
 
 /// Residual-patch splits of `members` (the surface's hard points): one
-/// proposal per connected group of off-plane cells, largest first.
+/// proposal per connected group of off-plane cells, largest first. The cell
+/// and off-plane tests: rules.residual_* (selection_rules.h).
 std::vector<SplitProposal> residualSplits(const std::vector<Eigen::Vector3d>& points,
                                           const std::vector<std::int32_t>& members,
                                           const Rectangle& rect, double cell_m, double min_offset_m,
-                                          double sigma, std::size_t min_part);
+                                          double sigma, std::size_t min_part,
+                                          const SelectionRules& rules = SelectionRules{});
 
 /// The largest of residualSplits, if any.
 std::optional<SplitProposal> residualSplit(const std::vector<Eigen::Vector3d>& points,
                                            const std::vector<std::int32_t>& members,
                                            const Rectangle& rect, double cell_m,
-                                           double min_offset_m, double sigma, std::size_t min_part);
+                                           double min_offset_m, double sigma, std::size_t min_part,
+                                           const SelectionRules& rules = SelectionRules{});
 
 }  // namespace pmap::em

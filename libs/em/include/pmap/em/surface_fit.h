@@ -10,6 +10,7 @@
 
 #include "pmap/em/neighbours.h"
 #include "pmap/em/responsibilities.h"
+#include "pmap/em/selection_rules.h"
 #include "pmap/em/surface.h"
 
 namespace pmap::em {
@@ -52,10 +53,12 @@ FitStatus fitSurface(const std::vector<Eigen::Vector3d>& points,
 
 /// The M-step over all surfaces: planes from the soft weights of `resp`,
 /// rectangles from the hard assignments (resp.best) that are spatially
-/// coherent (see coherentMembers). Sets support. Surfaces whose fit fails
+/// coherent (see coherentMembers: at least `coherent_neighbours` of their
+/// neighbours share their cause). Sets support. Surfaces whose fit fails
 /// keep their previous geometry.
 void maximizeSurfaces(const std::vector<Eigen::Vector3d>& points, const Neighbours& neighbours,
-                      const Responsibilities& resp, int threads, std::vector<Surface>& surfaces);
+                      const Responsibilities& resp, int threads, std::vector<Surface>& surfaces,
+                      int coherent_neighbours = SelectionRules{}.coherent_neighbours);
 
 /// Beyond the paper: the members of surface j whose most likely cause is
 /// shared by at least `min_same` of their neighbours. With a door recessed by

@@ -13,6 +13,7 @@
 #include "pmap/eval/map_accuracy.h"
 #include "pmap/eval/map_files.h"
 #include "pmap/eval/pose_metrics.h"
+#include "pmap/products/output_folder.h"
 
 namespace pmap::eval {
 
@@ -29,13 +30,16 @@ struct BaselineFile {
   std::string bytes;  ///< the file (OcTree::writeBinary's content)
 };
 
-/// Adds, where the map directory has the files: `octomap` (scans.csv and
-/// points.ply), `raw_map` (raw.glb), `planar_map` (surfaces.csv and map.glb),
-/// and `baseline_accuracy` (the sampling used). `points` are the directory's
-/// points.ply, `map_to_gt` the pose alignment. Returns the OctoMap trees as
-/// .bt files (none without scans.csv); each `octomap` entry names its file
-/// in `bt_file`. Writes nothing.
-std::vector<BaselineFile> addBaselineKeys(const std::filesystem::path& map_dir,
+/// Adds, where the map folder has the files (written by its run, as its
+/// manifest lists): `octomap` (scans.csv and points.ply), `raw_map`
+/// (raw.glb), `planar_map` (surfaces.csv and map.glb), and
+/// `baseline_accuracy` (the sampling used). `points` are the folder's
+/// points.ply, `map_to_gt` the pose alignment. Reads (and so checks) every
+/// file it needs before it builds the first OctoMap: a bad file is an
+/// InputError at once. Returns the OctoMap trees as .bt files (none without
+/// scans.csv); each `octomap` entry names its file in `bt_file`. Writes
+/// nothing.
+std::vector<BaselineFile> addBaselineKeys(const products::OutputFolder& map_folder,
                                           const GroundTruth& gt, const MapPoints& points,
                                           const Rigid2D& map_to_gt, const BaselineOptions& options,
                                           nlohmann::json& doc);

@@ -12,12 +12,14 @@
 
 namespace pmap::eval {
 
-/// The files map-eval reads from a map directory (those present are read):
+/// The files map-eval reads from a map directory (names of
+/// products::OutputLayout; those the manifest lists are read): manifest.json,
 /// poses.txt, points.ply, scans.csv, surfaces.csv, textures.csv, map.glb,
 /// map-geometry.glb, raw.glb. Texture images are listed in textures.csv.
 const std::vector<std::string>& mapInputFileNames();
 
-/// The inputs known before any work: the ground truth and map_dir's files.
+/// The inputs known before any work: the ground truth, map_dir's files of
+/// mapInputFileNames() and every file its manifest lists (the textures).
 std::vector<std::filesystem::path> knownInputs(const std::filesystem::path& map_dir,
                                                const std::filesystem::path& gt);
 
@@ -31,6 +33,14 @@ std::vector<std::filesystem::path> outputPaths(const std::filesystem::path& out,
 /// links, `..` resolved). Inputs that do not exist are skipped.
 void checkOutputsSpareInputs(const std::vector<std::filesystem::path>& outputs,
                              const std::vector<std::filesystem::path>& inputs);
+
+/// Throws OutputError (exit 4) when an output lies in `map_dir` under a name
+/// products::OutputLayout gives to planar-mapper (summary.json,
+/// viewer.html, a reserved name, ...): it would break the map folder. Its
+/// own names (eval.json, octomap_*.bt) and names the layout does not know
+/// are fine.
+void checkOutputsSpareMapFiles(const std::vector<std::filesystem::path>& outputs,
+                               const std::filesystem::path& map_dir);
 
 /// Writes each file beside `out` (its directory), then `doc` as `out`, each
 /// atomically; each `octomap` entry's `bt_file` becomes the path written.

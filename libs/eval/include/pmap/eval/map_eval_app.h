@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
 
 #include "pmap/eval/baseline_evaluation.h"
@@ -23,10 +24,14 @@ struct MapEvaluation {
   nlohmann::json doc;                         ///< eval.json
   std::vector<BaselineFile> files;            ///< to write beside it (octomap_5cm.bt, ...)
   std::vector<std::filesystem::path> images;  ///< image files read (textures, posters)
+  std::vector<std::string> warnings;          ///< one line each (a map folder without manifest)
 };
 
-/// Reads the inputs and computes everything; writes nothing. Throws
-/// InputError for unreadable or invalid inputs.
+/// Reads the inputs and computes everything; writes nothing. Reads only the
+/// map files its manifest.json lists, after checking every listed file's
+/// size and SHA-256 (products::OutputFolder); a folder without manifest is
+/// read as before, with a warning. Throws InputError for unreadable or
+/// invalid inputs and for map files that do not match the manifest.
 MapEvaluation runEvaluation(const MapEvalArgs& args);
 
 /// The evaluation document alone (runEvaluation(args).doc).

@@ -55,7 +55,8 @@ struct OctomapResult {
 std::string btFileContent(octomap::OcTree& tree);
 
 /// The .bt file name map-eval writes for a resolution: "octomap_5cm.bt" for
-/// 0.05, "octomap_10cm.bt" for 0.10 ("octomap_2.5cm.bt" for 0.025).
+/// 0.05, "octomap_10cm.bt" for 0.10 ("octomap_2.5cm.bt" for 0.025):
+/// products::OutputLayout::octomapFile.
 std::string octomapFileName(double resolution_m);
 
 /// Builds the tree: per scan (in scans.csv order of the points' first

@@ -14,16 +14,20 @@
 
 namespace pmap::mapper {
 
-/// Writes the map files of `products` into `out`. Throws OutputError.
-void writeMapFiles(const std::filesystem::path& out, const MapProducts& products,
-                   const MappingResult& result, const OutputOptions& options);
+/// Writes the map files of `products` into `dir` (the staging folder) under
+/// the names of products::OutputLayout; `folder_name` (--out's name) titles
+/// viewer.html. Polls pmap::throwIfInterrupted() between files. Throws
+/// OutputError.
+void writeMapFiles(const std::filesystem::path& dir, const std::string& folder_name,
+                   const MapProducts& products, const MappingResult& result,
+                   const OutputOptions& options);
 
 /// summary.json's "texture" block (doc/textures.md).
 nlohmann::json textureSummary(const MapperConfig& config, const MapProducts& products);
 
-/// Writes out/report/ (pictures and report.html) with the numbers of
+/// Writes DIR/report/ (pictures and report.html) with the numbers of
 /// `summary`; returns its warnings (a picture that could not be drawn).
-std::vector<std::string> writeReportFiles(const std::filesystem::path& out,
+std::vector<std::string> writeReportFiles(const std::filesystem::path& dir,
                                           const MapProducts& products, const MappingResult& result,
                                           const nlohmann::json& summary);
 

@@ -15,6 +15,7 @@
 #include "pmap/input/sensor_roles.h"
 #include "pmap/points/raw_mesh.h"
 #include "pmap/poses/icp_pose_tracker.h"
+#include "pmap/poses/loop_closure.h"
 #include "pmap/poses/motion_gate.h"
 #include "pmap/refine/refine_options.h"
 #include "pmap/texture/texture_options.h"
@@ -28,9 +29,10 @@ namespace pmap::mapper {
 /// [Poses]: the pose stage's own keys (MRPT's ICP keys stay in [ICP] and
 /// [MappingApplication]).
 struct PosesSection {
-  poses::MotionLimits motion;  ///< implausible motion (libs/poses motion_gate.h)
+  poses::MotionLimits motion;       ///< implausible motion (libs/poses motion_gate.h)
+  poses::LoopClosureOptions loops;  ///< the pose graph (libs/poses loop_closure.h)
   void load(config::SectionReader& reader);
-  bool validate(std::string* why) const { return motion.validate(why); }
+  bool validate(std::string* why) const { return motion.validate(why) && loops.validate(why); }
 };
 
 /// [Output]
@@ -78,6 +80,7 @@ struct MapperConfig {
   std::shared_ptr<config::EffectiveConfig> effective;
   input::SensorsOptions sensors;
   poses::MotionLimits motion;
+  poses::LoopClosureOptions loops;
   OutputOptions output;
   PlanarEmSection planar_em;
   em::OnlineEmOptions online_em;

@@ -19,6 +19,7 @@
 #include "pmap/points/point_map.h"
 #include "pmap/points/scan_placer.h"
 #include "pmap/poses/icp_pose_tracker.h"
+#include "pmap/poses/loop_closure.h"
 #include "pmap/poses/motion_gate.h"
 #include "pmap/poses/trajectory.h"
 #include "pmap/refine/map_refiner.h"
@@ -69,7 +70,8 @@ struct PoseResult {
   PoseSource source = PoseSource::kIcp;
   poses::Trajectory trajectory;
   poses::PoseStats stats;
-  poses::MotionGateStats motion;  ///< odometry / given poses dropped as implausible
+  poses::MotionGateStats motion;                 ///< odometry / given poses dropped as implausible
+  std::optional<poses::LoopClosureStats> loops;  ///< with [Poses] loop_closure = true
   /// Wall time of the pose stage for each input step that carried a
   /// pose-laser scan (ms).
   std::vector<double> step_ms;

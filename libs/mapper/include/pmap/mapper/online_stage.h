@@ -25,11 +25,14 @@ struct OnlineRecord {
 
 class OnlineStage {
  public:
-  /// `snapshot_every` > 0 writes DIR/snapshots/map_NNNNNN.wrl every so many scans.
+  /// `snapshot_every` > 0 writes OUT_DIR/snapshots/map_NNNNNN.wrl
+  /// (products::OutputLayout::snapshotFile) every so many scans; OUT_DIR is
+  /// the run's staging folder until the run ends (staged_outputs.h).
   OnlineStage(const em::PlanarEmOptions& em, const em::OnlineEmOptions& online,
               std::filesystem::path out_dir, int snapshot_every);
 
-  /// Feeds the scan `record` of `map` (just placed).
+  /// Feeds the scan `record` of `map` (just placed). Polls
+  /// pmap::throwIfInterrupted() first.
   void addScan(const points::PointMap& map, std::size_t record);
 
   const std::vector<OnlineRecord>& history() const { return history_; }

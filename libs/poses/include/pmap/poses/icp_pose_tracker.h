@@ -49,6 +49,10 @@ class IcpPoseTracker {
                     const std::vector<mrpt::obs::CObservation::Ptr>& observations);
 
   const Trajectory& trajectory() const { return trajectory_; }
+
+  /// The front end's current pose (its own frame).
+  mrpt::math::TPose3D currentPose() const;
+
   const PoseStats& stats() const { return stats_; }
 
  private:

@@ -11,6 +11,7 @@
 
 #include "pmap/input/observation_source.h"
 #include "pmap/poses/icp_pose_tracker.h"
+#include "pmap/poses/loop_closing_stage.h"
 #include "pmap/poses/motion_gate.h"
 #include "pmap/poses/trajectory.h"
 
@@ -18,8 +19,10 @@ namespace pmap::poses {
 
 class PoseStage {
  public:
-  /// ICP poses; odometry is gated by `limits`.
-  PoseStage(std::unique_ptr<IcpPoseTracker> tracker, MotionLimits limits);
+  /// ICP poses; odometry is gated by `limits`; with loop closure enabled the
+  /// trajectory is the pose graph's (loop_closing_stage.h).
+  PoseStage(std::unique_ptr<IcpPoseTracker> tracker, MotionLimits limits,
+            LoopClosureOptions loops = disabledLoops());
   /// Given poses, gated by `limits` (no re-anchoring: a given trajectory is
   /// not an odometry counter).
   PoseStage(const Trajectory& given, MotionLimits limits);
@@ -35,14 +38,24 @@ class PoseStage {
   PoseStats stats() const;
   /// What the motion gate dropped (odometry, or the given poses).
   const MotionGate& gate() const { return gate_; }
+  /// The loop-closing back end; null without loop closure.
+  const LoopClosingBackEnd* loops() const { return slam_ ? &slam_->backEnd() : nullptr; }
+
+  static LoopClosureOptions disabledLoops() {
+    LoopClosureOptions o;
+    o.enabled = false;
+    return o;
+  }
 
  private:
   void processFrame(const input::InputStep& step);
   void processOdometry(const mrpt::obs::CObservation::Ptr& obs);
+  void processPoseScan(const mrpt::obs::CObservation::Ptr& obs);
   mrpt::obs::CActionCollection::Ptr gatedAction(const mrpt::obs::CActionCollection::Ptr& action,
                                                 double frame_t);
 
   std::unique_ptr<IcpPoseTracker> tracker_;
+  std::unique_ptr<LoopClosingStage> slam_;
   MotionGate gate_;
   Trajectory given_;
   double last_action_t_ = std::numeric_limits<double>::quiet_NaN();

@@ -7,13 +7,16 @@
 #include <string>
 #include <vector>
 
+#include "pmap/products/output_layout.h"
+
 namespace pmap::products {
 
 /// Folder of the texture files, relative to the map file that uses them.
-inline constexpr const char* kTextureDir = "textures";
+inline constexpr const char* kTextureDir = OutputLayout::kTexturesDir;
 
-/// "textures/surface_<id>.png": the texture of surface `surface_id`, relative
-/// to the map file (also the URL written into map.wrl).
+/// "textures/surface_<id>.png" (OutputLayout::textureFile): the texture of
+/// surface `surface_id`, relative to the map file (also the URL written into
+/// map.wrl).
 std::string textureRelativePath(std::int32_t surface_id);
 
 /// "textures/surface_<id>_<tile>.png": tile `tile` of surface `surface_id`.

@@ -1,0 +1,92 @@
+// Scan-to-submap matching for loop closure, without a good initial guess:
+//  1. a correlative search (Olson, ICRA 2009): the submap's points make a
+//     likelihood grid (a Gaussian of each cell's distance to the nearest
+//     point); every pose of a window (x, y, theta) is scored by the mean
+//     likelihood of the query points. The search is exhaustive over angles
+//     and branch-and-bound in translation (as Hess et al., ICRA 2016): grids
+//     max-pooled over 2^h x 2^h cells bound the score of every offset of a
+//     block from above, so blocks are split best first and dropped as soon
+//     as their bound is no better than the best exact score found (or the
+//     acceptance threshold): the result is the exact best cell offset;
+//  2. the caller narrows down coarse to fine: a coarse grid over the whole
+//     window, then a fine grid around the coarse best (loop_closure.cpp).
+// The result is exact on the search lattice (resolution_m, the angle step);
+// a point-to-line refinement was tried on the Radish logs and left out: on
+// 1-degree scans with partial overlap it slid along corridors by decimetres.
+#pragma once
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "pmap/poses/pose_graph.h"
+
+namespace pmap::poses {
+
+struct ScanMatchOptions {
+  double resolution_m = 0.05;       ///< likelihood grid cell (m)
+  double sigma_m = 0.05;            ///< likelihood and point-to-line noise (m)
+  int levels = 7;                   ///< branch-and-bound levels: blocks of up to 2^(levels-1) cells
+  double min_angle_step_deg = 0.2;  ///< the angle step moves the farthest point one cell,
+  double max_angle_step_deg = 1.0;  ///< within these bounds
+  /// Consecutive reference points (a scan's neighbouring beams) closer than
+  /// this are joined by a line before the grid is built (free_space.h
+  /// densified).
+  double max_gap_m = 0.25;
+  double query_voxel_m = 0.1;  ///< query points thinned to one per voxel
+  int max_query_points = 400;  ///< and to at most this many
+  bool validate(std::string* why) const;
+};
+
+/// Where to search: around `guess`, +-linear_m in x and y, +-angular_deg.
+struct MatchWindow {
+  Pose2 guess;
+  double linear_m = 1.0;
+  double angular_deg = 10.0;
+};
+
+struct ScanMatch {
+  bool found = false;
+  Pose2 pose;        ///< of the query's frame in the reference's frame
+  double score = 0;  ///< mean likelihood of the query points, [0, 1]
+};
+
+/// A submap prepared for matching: its likelihood grid, max-pooled.
+class ScanMatcher {
+ public:
+  ScanMatcher(const std::vector<Eigen::Vector2d>& reference, ScanMatchOptions options);
+
+  /// The best pose of the window's lattice, if it scores more than
+  /// `min_score`. `found` is false when there is none, or the query or the
+  /// reference is empty.
+  ScanMatch match(const std::vector<Eigen::Vector2d>& query, const MatchWindow& window,
+                  double min_score = 0.0) const;
+
+ private:
+  struct Grid {
+    double x0 = 0, y0 = 0;  ///< lower corner (m)
+    int cols = 0, rows = 0;
+    /// levels[h]: the likelihood max-pooled over [c, c + 2^h) x [r, r + 2^h);
+    /// levels[0] is the likelihood itself.
+    std::vector<std::vector<float>> levels;
+    /// A window [c, c + 2^h) that starts left of (below) the grid still
+    /// overlaps it: its max is that of [0, 2^h), a superset of the overlap.
+    float at(int h, int c, int r) const {
+      const int w = 1 << h;
+      if (c <= -w || r <= -w || c >= cols || r >= rows) {
+        return 0.0f;
+      }
+      c = std::max(c, 0);
+      r = std::max(r, 0);
+      return levels[static_cast<std::size_t>(h)][static_cast<std::size_t>(r) * cols + c];
+    }
+  };
+  struct Search;
+  void buildGrid(const std::vector<Eigen::Vector2d>& reference);
+
+  ScanMatchOptions options_;
+  Grid grid_;
+};
+
+}  // namespace pmap::poses

@@ -1,0 +1,97 @@
+#include "pmap/poses/loop_closing_stage.h"
+
+#include <mrpt/poses/CPose3D.h>
+
+#include <cmath>
+
+namespace pmap::poses {
+namespace {
+
+Pose2 pose2(const mrpt::math::TPose3D& p) {
+  return {p.x, p.y, p.yaw};
+}
+
+bool samePose(const TimedPose& a, const TimedPose& b) {
+  return a.t == b.t && a.pose.x == b.pose.x && a.pose.y == b.pose.y && a.pose.yaw == b.pose.yaw;
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector2d> scanPointsInRobotFrame(
+    const mrpt::obs::CObservation2DRangeScan& scan) {
+  std::vector<Eigen::Vector2d> out;
+  const mrpt::poses::CPose3D& sensor = scan.sensorPose;
+  for (std::size_t i = 0; i < scan.getScanSize(); ++i) {
+    const double r = scan.getScanRange(i);
+    // A max-range reading is no return (CARMEN logs flag them valid).
+    if (!scan.getScanRangeValidity(i) || !std::isfinite(r) || r <= 0.0 ||
+        r >= 0.999 * scan.maxRange) {
+      continue;
+    }
+    const double a = scan.getScanAngle(i);
+    const mrpt::math::TPoint3D p =
+        sensor.composePoint(mrpt::math::TPoint3D(r * std::cos(a), r * std::sin(a), 0.0));
+    if (std::isfinite(p.x) && std::isfinite(p.y)) {
+      out.emplace_back(p.x, p.y);
+    }
+  }
+  return out;
+}
+
+LoopClosingStage::LoopClosingStage(LoopClosureOptions options, IcpPoseTracker& tracker)
+    : tracker_(tracker), back_end_(options) {}
+
+TimedPose LoopClosingStage::correctedSample(std::size_t i) const {
+  const TimedPose& p = tracker_.trajectory().poses()[i];
+  if (back_end_.empty()) {
+    return p;
+  }
+  const Pose2 c = back_end_.corrected(sample_keyframe_[i], pose2(p.pose));
+  return {p.t, mrpt::math::TPose3D(c.x, c.y, p.pose.z, c.theta, p.pose.pitch, p.pose.roll)};
+}
+
+void LoopClosingStage::sync() {
+  const auto& front = tracker_.trajectory().poses();
+  std::size_t from = sample_keyframe_.size();
+  // The tracker replaces its last sample when a later one has the same time.
+  if (from > 0 && from <= front.size() && !samePose(front[from - 1], corrected_front_last_)) {
+    --from;
+  }
+  const std::size_t kf = back_end_.empty() ? 0 : back_end_.newest();
+  sample_keyframe_.resize(front.size(), kf);
+  for (std::size_t i = from; i < front.size(); ++i) {
+    sample_keyframe_[i] = kf;
+    const TimedPose c = correctedSample(i);
+    corrected_.append(c.t, c.pose);
+  }
+  if (!front.empty()) {
+    corrected_front_last_ = front.back();
+  }
+}
+
+void LoopClosingStage::onScan(double t, const mrpt::obs::CObservation2DRangeScan::Ptr& scan) {
+  sync();
+  const std::size_t keyframes = back_end_.keyframes().size();
+  const bool closed =
+      back_end_.addScan(t, pose2(tracker_.currentPose()), scanPointsInRobotFrame(*scan));
+  if (back_end_.keyframes().size() > keyframes) {
+    if (!sample_keyframe_.empty()) {
+      sample_keyframe_.back() = back_end_.newest();  // this scan's sample: the keyframe itself
+      const TimedPose c = correctedSample(sample_keyframe_.size() - 1);
+      corrected_.append(c.t, c.pose);
+    }
+  }
+  if (closed) {
+    recomputeAll();
+  }
+}
+
+void LoopClosingStage::recomputeAll() {
+  corrected_ = Trajectory();
+  for (std::size_t i = 0; i < sample_keyframe_.size(); ++i) {
+    const TimedPose c = correctedSample(i);
+    corrected_.append(c.t, c.pose);
+  }
+}
+
+}  // namespace pmap::poses

@@ -1,0 +1,306 @@
+#include "pmap/poses/loop_closure.h"
+
+#include "pmap/poses/free_space.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace pmap::poses {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+double degToRad(double d) {
+  return d * M_PI / 180.0;
+}
+
+double distance(const Pose2& a, const Pose2& b) {
+  return std::hypot(a.x - b.x, a.y - b.y);
+}
+
+// A scan taken at pose `p` (its points in p's frame), in the frame of `frame`.
+Rays inFrame(const Pose2& frame, const Pose2& p, const std::vector<Eigen::Vector2d>& points) {
+  return moved({Rays{Eigen::Vector2d::Zero(), points}}, between(frame, p)).front();
+}
+
+}  // namespace
+
+bool LoopClosureOptions::validate(std::string* why) const {
+  const double positive[] = {keyframe_distance_m,
+                             keyframe_angle_deg,
+                             min_loop_path_m,
+                             search_radius_m,
+                             max_search_radius_m,
+                             search_angle_deg,
+                             max_search_angle_deg,
+                             submap_path_m,
+                             query_path_m,
+                             max_chi2,
+                             loop_sigma_m,
+                             loop_sigma_deg,
+                             odometry_sigma_fraction,
+                             odometry_sigma_deg,
+                             loop_loss_scale};
+  for (const double v : positive) {
+    if (!(v > 0.0) || !std::isfinite(v)) {
+      *why = "loop closure lengths, angles, windows, thresholds and scales must be finite and > 0";
+      return false;
+    }
+  }
+  if (!(search_growth >= 0.0) || !(search_angle_growth_deg_per_m >= 0.0)) {
+    *why = "search_growth and search_angle_growth_deg_per_m must be >= 0";
+    return false;
+  }
+  if (!(min_score >= 0.0 && min_score <= 1.0) ||
+      !(max_free_space_conflict >= 0.0 && max_free_space_conflict <= 1.0) ||
+      !(min_same_side_ratio >= 0.0 && min_same_side_ratio <= 1.0) ||
+      !(free_space_margin_m >= 0.0)) {
+    *why =
+        "loop_min_score and loop_max_free_space_conflict must be in [0, 1], "
+        "loop_free_space_margin_m >= 0";
+    return false;
+  }
+  if (candidates_per_keyframe < 1 || candidates_per_keyframe > 100) {
+    *why = "loop_candidates_per_keyframe must be in [1, 100]";
+    return false;
+  }
+  return true;
+}
+
+LoopClosingBackEnd::LoopClosingBackEnd(LoopClosureOptions options, ScanMatchOptions match)
+    : options_(options), match_options_(match), graph_(PoseGraphOptions{options.loop_loss_scale}) {}
+
+bool LoopClosingBackEnd::isKeyframe(const Pose2& front) const {
+  if (keyframes_.empty()) {
+    return true;
+  }
+  const Pose2& last = keyframes_.back().front;
+  return distance(last, front) >= options_.keyframe_distance_m ||
+         std::abs(wrapAngle(front.theta - last.theta)) >= degToRad(options_.keyframe_angle_deg);
+}
+
+bool LoopClosingBackEnd::addScan(double t, const Pose2& front,
+                                 std::vector<Eigen::Vector2d> points) {
+  if (have_front_) {
+    path_m_ += distance(last_front_, front);
+  }
+  last_front_ = front;
+  have_front_ = true;
+  if (!isKeyframe(front) || points.size() < 10) {
+    return false;
+  }
+  addKeyframe(t, front, std::move(points));
+  return options_.enabled && closeLoop();
+}
+
+Pose2 LoopClosingBackEnd::corrected(std::size_t keyframe, const Pose2& front) const {
+  const Keyframe& k = keyframes_[keyframe];
+  return compose(graph_.node(keyframe), between(k.front, front));
+}
+
+void LoopClosingBackEnd::addKeyframe(double t, const Pose2& front,
+                                     std::vector<Eigen::Vector2d> points) {
+  Keyframe k{t, front, path_m_, std::move(points)};
+  const std::size_t id = keyframes_.size();
+  // Its estimate: the newest keyframe's corrected pose, moved by the front end.
+  graph_.addNode(keyframes_.empty() ? front : corrected(id - 1, front));
+  keyframes_.push_back(std::move(k));
+  ++stats_.keyframes;
+  if (id > 0) {
+    PoseEdge e;
+    e.from = id - 1;
+    e.to = id;
+    e.measurement = between(keyframes_[id - 1].front, front);
+    e.information = odometryInformation(id - 1, id);
+    graph_.addEdge(e);
+  }
+}
+
+// What the front end's relative pose is worth: odometry_sigma_fraction of
+// the distance moved (at least 1 cm), odometry_sigma_deg plus a twentieth of
+// the turn.
+Eigen::Matrix3d LoopClosingBackEnd::odometryInformation(std::size_t from, std::size_t to) const {
+  const Pose2 z = between(keyframes_[from].front, keyframes_[to].front);
+  const double sigma_t = std::max(0.01, options_.odometry_sigma_fraction * std::hypot(z.x, z.y));
+  const double sigma_r = degToRad(options_.odometry_sigma_deg) + 0.05 * std::abs(z.theta);
+  return Eigen::Vector3d(1.0 / (sigma_t * sigma_t), 1.0 / (sigma_t * sigma_t),
+                         1.0 / (sigma_r * sigma_r))
+      .asDiagonal();
+}
+
+std::vector<std::size_t> LoopClosingBackEnd::candidates(double radius) const {
+  const std::size_t k = newest();
+  const Pose2& now = graph_.node(k);
+  std::vector<std::pair<double, std::size_t>> near;
+  for (std::size_t j = 0; j < k; ++j) {
+    if (keyframes_[k].path_m - keyframes_[j].path_m < options_.min_loop_path_m) {
+      break;  // keyframes are in path order: the rest are too recent
+    }
+    const double d = distance(graph_.node(j), now);
+    if (d <= radius) {
+      near.emplace_back(d, j);
+    }
+  }
+  std::sort(near.begin(), near.end());
+  // The nearest ones, spread along the path (one per submap's half-length).
+  std::vector<std::size_t> out;
+  for (const auto& [d, j] : near) {
+    const bool spread = std::none_of(out.begin(), out.end(), [&](std::size_t o) {
+      return std::abs(keyframes_[o].path_m - keyframes_[j].path_m) < 0.5 * options_.submap_path_m;
+    });
+    if (spread) {
+      out.push_back(j);
+    }
+    if (static_cast<int>(out.size()) >= options_.candidates_per_keyframe) {
+      break;
+    }
+  }
+  return out;
+}
+
+// The scans of the keyframes within half_path_m (along the path) of
+// `centre`, in centre's frame: placed with the graph's poses (optimised), or
+// with the front end's (the query: locally consistent, just seen).
+std::vector<Rays> LoopClosingBackEnd::scansAround(std::size_t centre, double half_path_m,
+                                                  bool optimised, bool only_older) const {
+  std::vector<Rays> out;
+  const double at = keyframes_[centre].path_m;
+  for (std::size_t i = 0; i < keyframes_.size(); ++i) {
+    const double d = keyframes_[i].path_m - at;
+    if (std::abs(d) > half_path_m || (only_older && d > 0)) {
+      continue;
+    }
+    out.push_back(
+        optimised ? inFrame(graph_.node(centre), graph_.node(i), keyframes_[i].points)
+                  : inFrame(keyframes_[centre].front, keyframes_[i].front, keyframes_[i].points));
+  }
+  return out;
+}
+
+// A match is refused when either side's points land where the other side's
+// beams passed freely (free_space.h).
+bool LoopClosingBackEnd::freeSpaceAgrees(const std::vector<Rays>& submap,
+                                         const std::vector<Rays>& query, const Pose2& match) const {
+  const double cell = 2.0 * match_options_.resolution_m;
+  const double margin = options_.free_space_margin_m, gap = match_options_.max_gap_m;
+  const FreeSpace submap_space(submap, cell, margin, gap);
+  const FreeSpace query_space(query, cell, margin, gap);
+  const std::vector<Rays> query_there = moved(query, match);
+  const std::vector<Rays> submap_here = moved(submap, inverse(match));
+  const double conflict = std::max(submap_space.conflict(allEnds(query_there)),
+                                   query_space.conflict(allEnds(submap_here)));
+  const double same_side =
+      std::min(submap_space.sameSide(query_there), query_space.sameSide(submap_here));
+  // Relative to how consistent each side is with itself: real scans, with
+  // clutter and 1-degree beams, agree with themselves less than simulated ones.
+  const double own = std::min(submap_space.sameSide(submap), query_space.sameSide(query));
+  return conflict <= options_.max_free_space_conflict &&
+         same_side >= options_.min_same_side_ratio * own;
+}
+
+// Coarse to fine (Olson 2009): the whole window on a coarse, blurred grid
+// (4x the cell and sigma, 80 % of the score), then a small window around its
+// best pose on the fine grid.
+LoopClosingBackEnd::Verdict LoopClosingBackEnd::tryCandidate(std::size_t older, double radius,
+                                                             double angle_deg, PoseEdge& edge,
+                                                             ScanMatch& match) const {
+  const std::size_t k = newest();
+  const std::vector<Rays> submap_scans =
+      scansAround(older, 0.5 * options_.submap_path_m, true, false);
+  const std::vector<Rays> query_scans = scansAround(k, options_.query_path_m, false, true);
+  const std::vector<Eigen::Vector2d> submap = allEnds(submap_scans);
+  const std::vector<Eigen::Vector2d> query = allEnds(query_scans);
+  ScanMatchOptions coarse = match_options_;
+  coarse.resolution_m = 4.0 * match_options_.resolution_m;
+  coarse.sigma_m = 4.0 * match_options_.sigma_m;
+  coarse.max_angle_step_deg = 1.0;
+  coarse.min_angle_step_deg = 0.5;
+  coarse.max_query_points = 150;
+  MatchWindow window;
+  window.guess = between(graph_.node(older), graph_.node(k));
+  window.linear_m = radius;
+  window.angular_deg = angle_deg;
+  const ScanMatch rough =
+      ScanMatcher(submap, coarse).match(query, window, 0.8 * options_.min_score);
+  if (!rough.found) {
+    return Verdict::kNoMatch;
+  }
+  window.guess = rough.pose;
+  window.linear_m = 2.0 * coarse.resolution_m;
+  window.angular_deg = 2.0;
+  match = ScanMatcher(submap, match_options_).match(query, window, options_.min_score);
+  if (!match.found) {
+    return Verdict::kNoMatch;
+  }
+  if (!freeSpaceAgrees(submap_scans, query_scans, match.pose)) {
+    return Verdict::kFreeSpaceConflict;
+  }
+  edge.from = older;
+  edge.to = k;
+  edge.measurement = match.pose;
+  const double st = options_.loop_sigma_m, sr = degToRad(options_.loop_sigma_deg);
+  edge.information = Eigen::Vector3d(1 / (st * st), 1 / (st * st), 1 / (sr * sr)).asDiagonal();
+  edge.loop = true;
+  return Verdict::kMatched;
+}
+
+bool LoopClosingBackEnd::closeLoop() {
+  const auto t0 = Clock::now();
+  const double since = path_m_ - path_at_last_closure_;
+  const double radius = std::min(options_.max_search_radius_m,
+                                 options_.search_radius_m + options_.search_growth * since);
+  const double angle =
+      std::min(options_.max_search_angle_deg,
+               options_.search_angle_deg + options_.search_angle_growth_deg_per_m * since);
+  PoseEdge best_edge;
+  ScanMatch best;
+  for (const std::size_t j : candidates(radius)) {
+    ++stats_.candidates;
+    PoseEdge edge;
+    ScanMatch match;
+    const Verdict v = tryCandidate(j, radius, angle, edge, match);
+    if (v != Verdict::kMatched) {
+      ++(v == Verdict::kNoMatch ? stats_.rejected_match : stats_.rejected_free_space);
+      continue;
+    }
+    if (match.score > best.score) {
+      best = match;
+      best_edge = edge;
+    }
+  }
+  stats_.search_s += secondsSince(t0);
+  return best.found && best.score > 0 && acceptAfterSolve(best_edge, best);
+}
+
+// Solves the graph with the loop; keeps it only if the graph agrees with it.
+bool LoopClosingBackEnd::acceptAfterSolve(const PoseEdge& edge, const ScanMatch& match) {
+  const auto t0 = Clock::now();
+  std::vector<Pose2> before(graph_.size());
+  for (std::size_t i = 0; i < graph_.size(); ++i) {
+    before[i] = graph_.node(i);
+  }
+  graph_.addEdge(edge);
+  graph_.optimize();
+  const double solve_s = secondsSince(t0);
+  stats_.solve_s += solve_s;
+  if (graph_.chi2(edge) > options_.max_chi2) {
+    graph_.removeLastLoopEdge();
+    for (std::size_t i = 0; i < before.size(); ++i) {
+      graph_.setNode(i, before[i]);
+    }
+    ++stats_.rejected_chi2;
+    return false;
+  }
+  const std::size_t k = newest();
+  closures_.push_back({edge.from, k, keyframes_[k].t, match.score,
+                       distance(before[k], graph_.node(k)), 1000.0 * solve_s});
+  ++stats_.accepted;
+  path_at_last_closure_ = path_m_;
+  return true;
+}
+
+}  // namespace pmap::poses

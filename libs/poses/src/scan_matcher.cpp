@@ -1,0 +1,231 @@
+#include "pmap/poses/scan_matcher.h"
+
+#include "pmap/poses/free_space.h"
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+
+namespace pmap::poses {
+namespace {
+
+std::int64_t cellKey(std::int64_t c, std::int64_t r) {
+  return (c << 32) ^ (r & 0xffffffffLL);
+}
+
+// Doubles a max-pooling window along one axis of a row-major grid: from the
+// max over [i, i + k) to the max over [i, i + 2k).
+std::vector<float> doubled(const std::vector<float>& g, int cols, int rows, int k, bool along_x) {
+  std::vector<float> out(g);
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < cols; ++c) {
+      const int c2 = along_x ? c + k : c;
+      const int r2 = along_x ? r : r + k;
+      if (c2 < cols && r2 < rows) {
+        float& o = out[static_cast<std::size_t>(r) * cols + c];
+        o = std::max(o, g[static_cast<std::size_t>(r2) * cols + c2]);
+      }
+    }
+  }
+  return out;
+}
+
+// The query points rotated by theta about the window's centre and placed at
+// its lower corner, in grid cells.
+std::vector<Eigen::Vector2i> cellsAt(const std::vector<Eigen::Vector2d>& query, double theta,
+                                     const Eigen::Vector2d& corner, double res) {
+  const double c = std::cos(theta), s = std::sin(theta);
+  std::vector<Eigen::Vector2i> out;
+  out.reserve(query.size());
+  for (const Eigen::Vector2d& q : query) {
+    const Eigen::Vector2d p(c * q.x() - s * q.y() + corner.x(), s * q.x() + c * q.y() + corner.y());
+    out.emplace_back(static_cast<int>(std::floor(p.x() / res)),
+                     static_cast<int>(std::floor(p.y() / res)));
+  }
+  return out;
+}
+
+// One point per voxel, then a regular subset of at most `cap` points.
+std::vector<Eigen::Vector2d> thinned(const std::vector<Eigen::Vector2d>& points, double voxel,
+                                     int cap) {
+  std::unordered_map<std::int64_t, int> seen;
+  std::vector<Eigen::Vector2d> out;
+  for (const auto& p : points) {
+    const auto c = static_cast<std::int64_t>(std::floor(p.x() / voxel));
+    const auto r = static_cast<std::int64_t>(std::floor(p.y() / voxel));
+    if (seen.emplace(cellKey(c, r), 0).second) {
+      out.push_back(p);
+    }
+  }
+  if (static_cast<int>(out.size()) <= cap) {
+    return out;
+  }
+  std::vector<Eigen::Vector2d> kept;
+  const double stride = static_cast<double>(out.size()) / cap;
+  for (int i = 0; i < cap; ++i) {
+    kept.push_back(out[static_cast<std::size_t>(i * stride)]);
+  }
+  return kept;
+}
+
+}  // namespace
+
+bool ScanMatchOptions::validate(std::string* why) const {
+  if (!(resolution_m > 0.0) || !(sigma_m > 0.0) || !(max_angle_step_deg > 0.0)) {
+    *why = "resolution_m, sigma_m and max_angle_step_deg must be > 0";
+    return false;
+  }
+  if (levels < 1 || levels > 12 || max_query_points < 3) {
+    *why = "levels must be in [1, 12], max_query_points >= 3";
+    return false;
+  }
+  if (!(min_angle_step_deg > 0.0) || min_angle_step_deg > max_angle_step_deg ||
+      !(query_voxel_m > 0.0) || !(max_gap_m >= 0.0)) {
+    *why = "0 < min_angle_step_deg <= max_angle_step_deg, query_voxel_m > 0, max_gap_m >= 0";
+    return false;
+  }
+  return true;
+}
+
+ScanMatcher::ScanMatcher(const std::vector<Eigen::Vector2d>& reference, ScanMatchOptions options)
+    : options_(options) {
+  if (!reference.empty()) {
+    const auto dense = densified(reference, options_.max_gap_m, 0.5 * options_.resolution_m);
+    buildGrid(dense);
+  }
+}
+
+void ScanMatcher::buildGrid(const std::vector<Eigen::Vector2d>& reference) {
+  const double res = options_.resolution_m;
+  const double reach = 3.0 * options_.sigma_m;
+  Eigen::Vector2d lo = reference.front(), hi = reference.front();
+  for (const auto& p : reference) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  grid_.x0 = lo.x() - reach - res;
+  grid_.y0 = lo.y() - reach - res;
+  grid_.cols = static_cast<int>(std::ceil((hi.x() - lo.x() + 2 * reach) / res)) + 3;
+  grid_.rows = static_cast<int>(std::ceil((hi.y() - lo.y() + 2 * reach) / res)) + 3;
+  grid_.levels.assign(1,
+                      std::vector<float>(static_cast<std::size_t>(grid_.cols) * grid_.rows, 0.0f));
+  const int r = static_cast<int>(std::ceil(reach / res));
+  const double inv2s2 = 1.0 / (2.0 * options_.sigma_m * options_.sigma_m);
+  for (const auto& p : reference) {
+    const int pc = static_cast<int>(std::floor((p.x() - grid_.x0) / res));
+    const int pr = static_cast<int>(std::floor((p.y() - grid_.y0) / res));
+    for (int dr = -r; dr <= r; ++dr) {
+      for (int dc = -r; dc <= r; ++dc) {
+        const int c = pc + dc, rr = pr + dr;
+        if (c < 0 || rr < 0 || c >= grid_.cols || rr >= grid_.rows) {
+          continue;
+        }
+        const Eigen::Vector2d centre(grid_.x0 + (c + 0.5) * res, grid_.y0 + (rr + 0.5) * res);
+        float& cell = grid_.levels[0][static_cast<std::size_t>(rr) * grid_.cols + c];
+        cell = std::max(cell, static_cast<float>(std::exp(-(centre - p).squaredNorm() * inv2s2)));
+      }
+    }
+  }
+  for (int h = 1; h < options_.levels; ++h) {
+    const int k = 1 << (h - 1);
+    grid_.levels.push_back(doubled(doubled(grid_.levels.back(), grid_.cols, grid_.rows, k, true),
+                                   grid_.cols, grid_.rows, k, false));
+  }
+}
+
+// Branch and bound over the translations of one window, all angles at once.
+struct ScanMatcher::Search {
+  struct Block {
+    double bound = 0;  ///< mean max-pooled likelihood: >= every offset's score in the block
+    int angle = 0;
+    int x = 0, y = 0;  ///< lower offset (cells)
+    int level = 0;     ///< the block is 2^level cells wide
+    bool operator>(const Block& o) const { return bound > o.bound; }
+  };
+  const Grid& grid;
+  std::vector<std::vector<Eigen::Vector2i>> cells;  ///< per angle
+  int width = 0;                                    ///< offsets per axis
+  double best = 0;
+  Block best_block;
+  bool found = false;
+
+  double bound(const Block& b) const {
+    double sum = 0;
+    for (const auto& c : cells[static_cast<std::size_t>(b.angle)]) {
+      sum += grid.at(b.level, c.x() + b.x, c.y() + b.y);
+    }
+    return sum / static_cast<double>(cells[static_cast<std::size_t>(b.angle)].size());
+  }
+
+  void descend(std::vector<Block> blocks) {
+    std::sort(blocks.begin(), blocks.end(), std::greater<Block>());
+    for (const Block& b : blocks) {
+      if (b.bound <= best) {
+        return;  // sorted: no later block can do better
+      }
+      if (b.level == 0) {
+        best = b.bound;  // at level 0 the bound is the score
+        best_block = b;
+        found = true;
+        continue;
+      }
+      std::vector<Block> children;
+      const int half = 1 << (b.level - 1);
+      for (int dy = 0; dy < 2; ++dy) {
+        for (int dx = 0; dx < 2; ++dx) {
+          Block c{0, b.angle, b.x + dx * half, b.y + dy * half, b.level - 1};
+          if (c.x < width && c.y < width) {
+            c.bound = bound(c);
+            children.push_back(c);
+          }
+        }
+      }
+      descend(std::move(children));
+    }
+  }
+};
+
+ScanMatch ScanMatcher::match(const std::vector<Eigen::Vector2d>& query_in,
+                             const MatchWindow& window, double min_score) const {
+  const std::vector<Eigen::Vector2d> query =
+      thinned(query_in, options_.query_voxel_m, options_.max_query_points);
+  if (query.empty() || grid_.levels.empty()) {
+    return ScanMatch{};
+  }
+  const double res = options_.resolution_m;
+  double max_range = res;
+  for (const auto& q : query) {
+    max_range = std::max(max_range, q.norm());
+  }
+  // An angle step that moves the farthest point by about one cell.
+  const double step = std::clamp(res / max_range, options_.min_angle_step_deg * M_PI / 180.0,
+                                 options_.max_angle_step_deg * M_PI / 180.0);
+  const int n_angles = static_cast<int>(std::ceil(window.angular_deg * M_PI / 180.0 / step));
+  Search search{grid_,     {}, static_cast<int>(std::ceil(2.0 * window.linear_m / res)) + 1,
+                min_score, {}, false};
+  const Eigen::Vector2d corner(window.guess.x - window.linear_m - grid_.x0,
+                               window.guess.y - window.linear_m - grid_.y0);
+  const int top = options_.levels - 1;
+  std::vector<Search::Block> roots;
+  for (int a = 0; a <= 2 * n_angles; ++a) {
+    search.cells.push_back(cellsAt(query, window.guess.theta + (a - n_angles) * step, corner, res));
+    for (int y = 0; y < search.width; y += 1 << top) {
+      for (int x = 0; x < search.width; x += 1 << top) {
+        Search::Block b{0, a, x, y, top};
+        b.bound = search.bound(b);
+        roots.push_back(b);
+      }
+    }
+  }
+  search.descend(std::move(roots));
+  if (!search.found) {
+    return ScanMatch{};
+  }
+  const Search::Block& b = search.best_block;
+  const Pose2 best{window.guess.x - window.linear_m + b.x * res,
+                   window.guess.y - window.linear_m + b.y * res,
+                   wrapAngle(window.guess.theta + (b.angle - n_angles) * step)};
+  return ScanMatch{true, best, search.best};
+}
+
+}  // namespace pmap::poses

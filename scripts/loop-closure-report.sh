@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# Measures loop closure on the Radish ACES log (real 2D laser, published
+# reference relations, ../shared/data/radish/README.md) and writes
+# doc/loop-closure.md: the pose stage without and with [Poses] loop_closure,
+# the Kümmerle relation error of each, and the median wall time of 3 runs.
+# Usage: scripts/loop-closure-report.sh [BUILD_DIR] [RADISH_DIR] [RELATION_TOOL]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bin="${1:-build}/bin"
+radish="${2:-../shared/data/radish}"
+tool="${3:-../shared/tools/relation_error.py}"
+for f in "$radish/aces.rawlog" "$radish/aces.scan_relations.txt" "$tool"; do
+  [[ -f $f ]] || { echo "loop-closure-report: $f not found" >&2; exit 1; }
+done
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+sed "s#^@include icp.ini#@include $PWD/config/icp.ini#" config/radish.ini > "$work/on.ini"
+sed 's/^loop_closure = true/loop_closure = false/' "$work/on.ini" > "$work/off.ini"
+
+median_time() {  # median_time INI OUT: median wall time (s) of 3 runs
+  local t=()
+  for _ in 1 2 3; do
+    rm -rf "$2"
+    local t0
+    t0=$(date +%s.%N)
+    "$bin/planar-mapper" --config "$1" --rawlog "$radish/aces.rawlog" --poses-only --out "$2" -q
+    t+=("$(python3 -c "import sys; print('%.1f' % (float(sys.argv[1]) - float(sys.argv[2])))" \
+      "$(date +%s.%N)" "$t0")")
+  done
+  printf '%s\n' "${t[@]}" | sort -n | sed -n 2p
+}
+
+row() {  # row NAME INI
+  local out="$work/$1" secs errs
+  secs=$(median_time "$2" "$out")
+  errs=$(python3 "$tool" "$out/poses.txt" "$radish/aces.scan_relations.txt")
+  local all short loop
+  all=$(grep '^all:' <<<"$errs" | sed 's/.*translation \([^ ]*\) ± \([^ ]*\) m, rotation \([^ ]*\) ± \([^ ]*\) deg/\1 ± \2 | \3 ± \4/')
+  short=$(grep '^short' <<<"$errs" | sed 's/.*translation \([^ ]*\) ± \([^ ]*\) m.*/\1 ± \2/')
+  loop=$(grep '^loop' <<<"$errs" | sed 's/.*translation \([^ ]*\) ± \([^ ]*\) m, rotation \([^ ]*\) ± \([^ ]*\) deg/\1 ± \2 | \3 ± \4/')
+  echo "| $1 | $all | $short | $loop | $secs | $(python3 -c "import sys; print(round(1365 / float(sys.argv[1])))" "$secs") |"
+}
+
+off=$(row "ICP only" "$work/off.ini")
+on=$(row "ICP + loop closure" "$work/on.ini")
+cat > doc/loop-closure.md <<DOC
+# Loop closure on real data (ACES)
+
+Written by \`scripts/loop-closure-report.sh\` ($(date -u +%Y-%m-%d)). The pose stage of
+planar-mapper on the Radish ACES log (7,374 scans, 1,365 s, several loops;
+\`config/radish.ini\`, \`--poses-only\`), scored with the Kümmerle et al.
+relation error against the benchmark's 1,279 reference relations (mean ±
+std; "short": relations under 20 scans apart, "loop": the 116 longer ones,
+which close loops). Time: median wall time of 3 runs on a shared 2-core
+machine; "x real time" = 1,365 s / that. How loop closure works, and why it
+is off by default: poses.md, "Loop closure".
+
+| run | all: translation (m) | all: rotation (deg) | short: translation (m) | loop: translation (m) | loop: rotation (deg) | time (s) | x real time |
+|---|---|---|---|---|---|---|---|
+$off
+$on
+
+Published on this log (translation): Cartographer about 0.04 ± 0.04 m,
+graph SLAM in Kümmerle et al. about 0.04 m. The loop closure here is far from
+that: its free-space verification, set on simulated worlds where it keeps
+every aliased match out, refuses most of ACES's candidates (issue 15).
+DOC
+echo "wrote doc/loop-closure.md"

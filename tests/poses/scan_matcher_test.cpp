@@ -1,0 +1,105 @@
+// Issue 15: the scan-to-submap matcher finds a known pose without a good
+// initial guess: the exact best pose of its search lattice.
+#include "pmap/poses/scan_matcher.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace pmap::poses {
+namespace {
+
+// Points along the walls of a room with a few boxes in it (world frame).
+std::vector<Eigen::Vector2d> room(double w, double h, bool boxes) {
+  std::vector<Eigen::Vector2d> pts;
+  for (double t = 0; t < w; t += 0.03) {
+    pts.emplace_back(t, 0.0);
+    pts.emplace_back(t, h);
+  }
+  for (double t = 0; t < h; t += 0.03) {
+    pts.emplace_back(0.0, t);
+    pts.emplace_back(w, t);
+  }
+  if (boxes) {
+    for (double t = 0; t < 1.0; t += 0.03) {
+      pts.emplace_back(2.0 + t, 1.5);
+      pts.emplace_back(2.0, 1.5 + t);
+      pts.emplace_back(5.0, 3.0 + t);
+    }
+  }
+  return pts;
+}
+
+// `world` seen from `pose`: in its frame.
+std::vector<Eigen::Vector2d> seenFrom(const std::vector<Eigen::Vector2d>& world, const Pose2& pose,
+                                      double noise, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> n(0.0, noise);
+  const Pose2 inv = inverse(pose);
+  const double c = std::cos(inv.theta), s = std::sin(inv.theta);
+  std::vector<Eigen::Vector2d> out;
+  for (const auto& p : world) {
+    out.emplace_back(c * p.x() - s * p.y() + inv.x + n(rng),
+                     s * p.x() + c * p.y() + inv.y + n(rng));
+  }
+  return out;
+}
+
+TEST(ScanMatcher, FindsAKnownPoseFarFromTheGuess) {
+  const auto world = room(8.0, 5.0, true);
+  const Pose2 truth{3.2, 2.1, 0.35};
+  const ScanMatcher matcher(world, ScanMatchOptions{});
+  MatchWindow window;
+  window.guess = {2.0, 1.4, 0.1};  // 1.4 m and 14 deg away
+  window.linear_m = 2.0;
+  window.angular_deg = 25.0;
+  const ScanMatch m = matcher.match(seenFrom(world, truth, 0.01, 1), window, 0.5);
+  ASSERT_TRUE(m.found);
+  // On the lattice: within a cell (5 cm) and an angle step (at most 1 deg).
+  EXPECT_NEAR(m.pose.x, truth.x, 0.05);
+  EXPECT_NEAR(m.pose.y, truth.y, 0.05);
+  EXPECT_NEAR(m.pose.theta, truth.theta, M_PI / 180.0);
+  EXPECT_GT(m.score, 0.7);
+}
+
+// The bounds are upper bounds: branch and bound returns the same pose as
+// scoring every pose of the window, also when the window reaches past the
+// grid's edge (a block that starts outside the grid still overlaps it).
+TEST(ScanMatcher, BranchAndBoundEqualsExhaustiveSearch) {
+  const auto world = room(6.0, 4.0, true);
+  const Pose2 truth{0.4, 0.3, -0.2};  // near the corner: windows leave the grid
+  const auto query = seenFrom(world, truth, 0.01, 3);
+  ScanMatchOptions pruned;
+  ScanMatchOptions flat = pruned;
+  flat.levels = 1;  // every offset scored exactly
+  MatchWindow window;
+  window.guess = {0.0, 0.0, 0.0};
+  window.linear_m = 1.0;
+  window.angular_deg = 15.0;
+  const ScanMatch a = ScanMatcher(world, pruned).match(query, window, 0.1);
+  const ScanMatch b = ScanMatcher(world, flat).match(query, window, 0.1);
+  ASSERT_TRUE(a.found);
+  ASSERT_TRUE(b.found);
+  EXPECT_DOUBLE_EQ(a.score, b.score);
+  EXPECT_DOUBLE_EQ(a.pose.x, b.pose.x);
+  EXPECT_DOUBLE_EQ(a.pose.y, b.pose.y);
+  EXPECT_DOUBLE_EQ(a.pose.theta, b.pose.theta);
+}
+
+TEST(ScanMatcher, NothingAboveTheThresholdIsNotFound) {
+  const auto world = room(8.0, 5.0, true);
+  const ScanMatcher matcher(world, ScanMatchOptions{});
+  std::vector<Eigen::Vector2d> other;  // a different place: a lone diagonal line
+  for (double t = 0; t < 3.0; t += 0.03) {
+    other.emplace_back(t, 0.7 * t);
+  }
+  MatchWindow window;
+  window.guess = {4.0, 2.5, 0.0};
+  window.linear_m = 1.0;
+  window.angular_deg = 10.0;
+  EXPECT_FALSE(matcher.match(other, window, 0.8).found);
+}
+
+}  // namespace
+}  // namespace pmap::poses
