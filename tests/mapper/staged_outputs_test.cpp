@@ -122,8 +122,10 @@ std::pair<int, int> endOf(const testing::ChildProcess& child) {
 }
 
 /// Waits up to a minute for `path` to exist.
+// A hang guard, not a time limit: 10 minutes (a sanitizer build maps the
+// sample many times slower than a release build).
 bool waitForPath(const fs::path& path) {
-  for (int i = 0; i < 6000; ++i) {
+  for (int i = 0; i < 60000; ++i) {
     std::error_code ec;
     if (fs::exists(path, ec)) {
       return true;

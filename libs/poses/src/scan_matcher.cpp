@@ -9,8 +9,9 @@
 namespace pmap::poses {
 namespace {
 
-std::int64_t cellKey(std::int64_t c, std::int64_t r) {
-  return (c << 32) ^ (r & 0xffffffffLL);
+// Unsigned shifts: a left shift of a negative value is undefined in C++17.
+std::uint64_t cellKey(std::int64_t c, std::int64_t r) {
+  return (static_cast<std::uint64_t>(c) << 32) ^ (static_cast<std::uint64_t>(r) & 0xffffffffULL);
 }
 
 // Doubles a max-pooling window along one axis of a row-major grid: from the
@@ -48,7 +49,7 @@ std::vector<Eigen::Vector2i> cellsAt(const std::vector<Eigen::Vector2d>& query, 
 // One point per voxel, then a regular subset of at most `cap` points.
 std::vector<Eigen::Vector2d> thinned(const std::vector<Eigen::Vector2d>& points, double voxel,
                                      int cap) {
-  std::unordered_map<std::int64_t, int> seen;
+  std::unordered_map<std::uint64_t, int> seen;
   std::vector<Eigen::Vector2d> out;
   for (const auto& p : points) {
     const auto c = static_cast<std::int64_t>(std::floor(p.x() / voxel));
