@@ -148,7 +148,8 @@ std::vector<std::size_t> LoopClosingBackEnd::candidates(double radius) const {
   std::sort(near.begin(), near.end());
   // The nearest ones, spread along the path (one per submap's half-length).
   std::vector<std::size_t> out;
-  for (const auto& [d, j] : near) {
+  for (const auto& near_one : near) {
+    const std::size_t j = near_one.second;  // (clang 14 cannot capture a structured binding)
     const bool spread = std::none_of(out.begin(), out.end(), [&](std::size_t o) {
       return std::abs(keyframes_[o].path_m - keyframes_[j].path_m) < 0.5 * options_.submap_path_m;
     });
