@@ -9,6 +9,7 @@
 #include <fstream>
 #include <limits>
 
+#include "nan_glb.h"
 #include "pmap/common/error.h"
 #include "pmap/products/map_gltf.h"
 
@@ -71,16 +72,8 @@ TEST(GlbMesh, Item12_NanPositionOrADirectoryIsAnInputError) {
   products::MapModel m;
   m.fine.vertices = {Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(0, 1, 123.25)};
   m.fine.triangles = {{0, 1, 2}};
-  std::vector<std::uint8_t> bytes = products::encodeMapGlb(m, false);
-  const float mark = 123.25f, nan = std::numeric_limits<float>::quiet_NaN();
-  const auto* m8 = reinterpret_cast<const std::uint8_t*>(&mark);
-  const auto at = std::search(bytes.begin(), bytes.end(), m8, m8 + 4);
-  ASSERT_NE(at, bytes.end());
-  std::memcpy(&*at, &nan, 4);
   const fs::path glb = tmpDir() / "nan.glb";
-  std::ofstream(glb, std::ios::binary)
-      .write(reinterpret_cast<const char*>(bytes.data()),
-             static_cast<std::streamsize>(bytes.size()));
+  ASSERT_TRUE(pmap::testing::writeGlbWithNan(m, 123.25f, glb));
   try {
     readGlbTriangles(glb);
     FAIL() << "no error";

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "nan_glb.h"
+
 #include <octomap/OcTree.h>
 
 #include <algorithm>
@@ -406,15 +408,7 @@ TEST(MapEvalApp, Item12_NonFiniteNumbersInEveryInputAreInputErrors) {
     m.fine.vertices = {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(2, 0, 0),
                        Eigen::Vector3d(1, 0, 123.25)};
     m.fine.triangles = {{0, 1, 2}};
-    std::vector<std::uint8_t> bytes = products::encodeMapGlb(m, false);
-    const float mark = 123.25f, nan = std::numeric_limits<float>::quiet_NaN();
-    const auto* m8 = reinterpret_cast<const std::uint8_t*>(&mark);
-    const auto at = std::search(bytes.begin(), bytes.end(), m8, m8 + 4);
-    ASSERT_NE(at, bytes.end());
-    std::memcpy(&*at, &nan, 4);
-    std::ofstream(args.map_dir / "raw.glb", std::ios::binary)
-        .write(reinterpret_cast<const char*>(bytes.data()),
-               static_cast<std::streamsize>(bytes.size()));
+    ASSERT_TRUE(pmap::testing::writeGlbWithNan(m, 123.25f, args.map_dir / "raw.glb"));
     const AppRun run = runMapEval(cli(args));
     EXPECT_EQ(run.exit_code, 2);
     expectOneErrorLine(run, "raw.glb: accessor ");

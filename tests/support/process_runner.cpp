@@ -24,13 +24,13 @@ std::string slurp(const fs::path& p) {
   return s.str();
 }
 
-// Waits for `pid`: its exit code or signal and peak RSS (nothing if pid < 0).
-ProcessResult waitFor(pid_t pid) {
-  ProcessResult r;
+// Waits for `pid`: its exit code or signal and peak RSS. False if it could
+// not be waited for (pid < 0: the fork failed).
+bool waitFor(pid_t pid, ProcessResult& r) {
   int status = 0;
   rusage usage{};
   if (pid < 0 || ::wait4(pid, &status, 0, &usage) != pid) {
-    return r;
+    return false;
   }
   r.max_rss_kib = usage.ru_maxrss;
   if (WIFEXITED(status)) {
@@ -38,7 +38,17 @@ ProcessResult waitFor(pid_t pid) {
   } else if (WIFSIGNALED(status)) {
     r.signal = WTERMSIG(status);
   }
-  return r;
+  return true;
+}
+
+// execv's argument vector: pointers into `argv`, null-terminated.
+std::vector<char*> execArgs(const std::vector<std::string>& argv) {
+  std::vector<char*> args;
+  for (const std::string& a : argv) {
+    args.push_back(const_cast<char*>(a.c_str()));
+  }
+  args.push_back(nullptr);
+  return args;
 }
 
 }  // namespace
@@ -50,11 +60,7 @@ fs::path programPath(const std::string& name) {
 ProcessResult runProcess(const std::vector<std::string>& argv, const fs::path& dir) {
   const fs::path tmp = freshTestDir("process_" + std::to_string(::getpid()));
   const fs::path out = tmp / "stdout", err = tmp / "stderr";
-  std::vector<char*> args;
-  for (const std::string& a : argv) {
-    args.push_back(const_cast<char*>(a.c_str()));
-  }
-  args.push_back(nullptr);
+  std::vector<char*> args = execArgs(argv);
   std::fflush(nullptr);
   const pid_t pid = ::fork();
   if (pid == 0) {
@@ -67,8 +73,8 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const fs::path& d
     ::execv(args[0], args.data());
     ::_exit(127);
   }
-  ProcessResult r = waitFor(pid);
-  if (pid >= 0) {
+  ProcessResult r;
+  if (waitFor(pid, r)) {
     r.out = slurp(out);
     r.err = slurp(err);
   }
@@ -77,11 +83,7 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const fs::path& d
 
 ChildProcess startProcess(const std::vector<std::string>& argv, const fs::path& err_file,
                           long long file_size_limit_bytes) {
-  std::vector<char*> args;
-  for (const std::string& a : argv) {
-    args.push_back(const_cast<char*>(a.c_str()));
-  }
-  args.push_back(nullptr);
+  std::vector<char*> args = execArgs(argv);
   std::fflush(nullptr);
   const pid_t pid = ::fork();
   if (pid == 0) {
@@ -106,8 +108,10 @@ ChildProcess startProcess(const std::vector<std::string>& argv, const fs::path& 
 }
 
 ProcessResult ChildProcess::wait() const {
-  ProcessResult r = waitFor(pid);
-  r.err = err();
+  ProcessResult r;
+  if (waitFor(pid, r)) {
+    r.err = err();
+  }
   return r;
 }
 

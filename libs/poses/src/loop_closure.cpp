@@ -206,13 +206,14 @@ bool LoopClosingBackEnd::freeSpaceAgrees(const std::vector<Rays>& submap,
 // Coarse to fine (Olson 2009): the whole window on a coarse, blurred grid
 // (4x the cell and sigma, 80 % of the score), then a small window around its
 // best pose on the fine grid.
-LoopClosingBackEnd::Verdict LoopClosingBackEnd::tryCandidate(std::size_t older, double radius,
-                                                             double angle_deg, PoseEdge& edge,
+LoopClosingBackEnd::Verdict LoopClosingBackEnd::tryCandidate(std::size_t older,
+                                                             const std::vector<Rays>& query_scans,
+                                                             double radius, double angle_deg,
+                                                             PoseEdge& edge,
                                                              ScanMatch& match) const {
   const std::size_t k = newest();
   const std::vector<Rays> submap_scans =
       scansAround(older, 0.5 * options_.submap_path_m, true, false);
-  const std::vector<Rays> query_scans = scansAround(k, options_.query_path_m, false, true);
   const std::vector<Eigen::Vector2d> submap = allEnds(submap_scans);
   const std::vector<Eigen::Vector2d> query = allEnds(query_scans);
   ScanMatchOptions coarse = match_options_;
@@ -259,11 +260,17 @@ bool LoopClosingBackEnd::closeLoop() {
                options_.search_angle_deg + options_.search_angle_growth_deg_per_m * since);
   PoseEdge best_edge;
   ScanMatch best;
-  for (const std::size_t j : candidates(radius)) {
+  const std::vector<std::size_t> older = candidates(radius);
+  // The query (the newest keyframe's recent scans) is the same for every
+  // candidate.
+  const std::vector<Rays> query = older.empty()
+                                      ? std::vector<Rays>{}
+                                      : scansAround(newest(), options_.query_path_m, false, true);
+  for (const std::size_t j : older) {
     ++stats_.candidates;
     PoseEdge edge;
     ScanMatch match;
-    const Verdict v = tryCandidate(j, radius, angle, edge, match);
+    const Verdict v = tryCandidate(j, query, radius, angle, edge, match);
     if (v != Verdict::kMatched) {
       ++(v == Verdict::kNoMatch ? stats_.rejected_match : stats_.rejected_free_space);
       continue;

@@ -127,8 +127,8 @@ class LoopClosingBackEnd {
                                 bool only_older) const;
   bool freeSpaceAgrees(const std::vector<Rays>& submap, const std::vector<Rays>& query,
                        const Pose2& match) const;
-  Verdict tryCandidate(std::size_t older, double radius, double angle_deg, PoseEdge& edge,
-                       ScanMatch& match) const;
+  Verdict tryCandidate(std::size_t older, const std::vector<Rays>& query_scans, double radius,
+                       double angle_deg, PoseEdge& edge, ScanMatch& match) const;
   bool acceptAfterSolve(const PoseEdge& edge, const ScanMatch& match);
 
   LoopClosureOptions options_;
