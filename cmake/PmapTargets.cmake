@@ -24,13 +24,20 @@ function(pmap_target_defaults target)
 endfunction()
 
 # pmap_add_library(<name> SOURCES ... [PUBLIC_DEPS ...] [PRIVATE_DEPS ...])
-# Creates pmap_<name> (alias pmap::<name>) with include/ as its public include dir.
+# Creates pmap_<name> (alias pmap::<name>) with include/ as its public include
+# dir (the headers other libraries and the apps use) and internal/, when it
+# exists, as a private one (headers used inside the library alone).
 function(pmap_add_library name)
   cmake_parse_arguments(ARG "" "" "SOURCES;PUBLIC_DEPS;PRIVATE_DEPS" ${ARGN})
   add_library(pmap_${name} STATIC ${ARG_SOURCES})
   add_library(pmap::${name} ALIAS pmap_${name})
   target_include_directories(pmap_${name} PUBLIC
     $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>)
+  if(IS_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/internal)
+    target_include_directories(pmap_${name} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/internal)
+    set_target_properties(pmap_${name} PROPERTIES
+      PMAP_INTERNAL_DIR ${CMAKE_CURRENT_SOURCE_DIR}/internal)
+  endif()
   target_link_libraries(pmap_${name} PUBLIC ${ARG_PUBLIC_DEPS} PRIVATE ${ARG_PRIVATE_DEPS})
   pmap_target_defaults(pmap_${name})
 endfunction()
@@ -44,12 +51,30 @@ function(pmap_add_app name)
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/bin)
 endfunction()
 
+# pmap_see_internals(<target> <dep>...): lets a test or benchmark include the
+# internal headers of each project library <dep> (pmap::<lib>) it names;
+# other names are ignored.
+function(pmap_see_internals target)
+  foreach(dep ${ARGN})
+    if(dep MATCHES "^pmap::(.+)$")
+      set(lib pmap_${CMAKE_MATCH_1})
+      if(TARGET ${lib})
+        get_target_property(dir ${lib} PMAP_INTERNAL_DIR)
+        if(dir)
+          target_include_directories(${target} PRIVATE ${dir})
+        endif()
+      endif()
+    endif()
+  endforeach()
+endfunction()
+
 # pmap_add_gtest(<name> SOURCES ... DEPS ... [LABELS ...] [FIXTURES ...])
 # FIXTURES: CTest fixtures the tests require (e.g. simulated worlds).
 function(pmap_add_gtest name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;LABELS;FIXTURES" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest GTest::gtest_main)
+  pmap_see_internals(${name} ${ARG_DEPS})
   pmap_target_defaults(${name})
   target_compile_definitions(${name} PRIVATE
     PMAP_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
