@@ -156,6 +156,23 @@ json probeSample(const fs::path& dir, const std::vector<std::string>& steps) {
   return report["steps"];
 }
 
+// Item 9: the documented plain `chromium --screenshot` command has no way to
+// wait for the page: the textured sample's first frame must be drawn before
+// the page's load event (texture images decode through <img> elements, whose
+// loads delay that event; an ImageBitmap decode did not, and under load the
+// command took a blank picture before the first frame).
+TEST_F(SampleViewer, Item9_FirstFrameIsDrawnBeforeTheLoadEvent) {
+  std::string log;
+  ASSERT_EQ(
+      pmap::test::runProbe(kTools, dir_ / "viewer.html", dir_ / "report.json", {"state"}, log), 0)
+      << log;
+  const json report = json::parse(pmap::test::readAll(dir_ / "report.json"));
+  ASSERT_TRUE(report["initial"]["ready"].get<bool>());
+  EXPECT_GT(report["initial"]["modelTriangles"].get<int>(), 0);
+  EXPECT_TRUE(report["initial"]["drawnAtLoad"].get<bool>())
+      << "the first frame came after the load event";
+}
+
 /// surfaces.csv: support by surface id.
 std::map<int, int> supportsOfCsv(const fs::path& csv) {
   std::ifstream in(csv);

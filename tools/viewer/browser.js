@@ -58,11 +58,21 @@ async function viewerState(page, timeoutMs, condition) {
   return page.evaluate(() => ({...window.pmapViewer}));
 }
 
-/** Opens `html` and waits for the first frame; throws if the viewer failed. */
+/**
+ * Opens `html` and waits for the first frame; throws if the viewer failed.
+ * The state has `drawnAtLoad`: whether the first frame was drawn when the
+ * page's load event fired (what a plain `chromium --screenshot` relies on).
+ */
 async function openViewer(page, html, timeoutMs) {
+  await page.addInitScript(() => window.addEventListener('load', () => {
+    window.pmapDrawnAtLoad = Boolean(window.pmapViewer && window.pmapViewer.ready);
+  }));
   await page.goto(`file://${html}`);
-  const state = await viewerState(page, timeoutMs, () => window.pmapViewer &&
-                                  (window.pmapViewer.ready || window.pmapViewer.error));
+  await viewerState(page, timeoutMs, () => window.pmapViewer &&
+                    (window.pmapViewer.ready || window.pmapViewer.error));
+  await page.waitForFunction(() => document.readyState === 'complete', null, {timeout: timeoutMs});
+  const state = await page.evaluate(() => ({...window.pmapViewer,
+                                            drawnAtLoad: window.pmapDrawnAtLoad === true}));
   if (!state.ready) throw new Error(`the viewer failed: ${state.error}`);
   return state;
 }

@@ -19,8 +19,24 @@ import {surfacePixels} from './visibility.js';
 
 const BACKGROUND = 0xeef1f4;
 
+/**
+ * A GLTFLoader plugin that decodes the map's texture images through <img>
+ * elements instead of createImageBitmap. An image element's load delays the
+ * page's load event and holds Chromium's virtual time, so the first frame is
+ * drawn before a headless `chromium --screenshot --virtual-time-budget=...`
+ * (doc/viewer.md) takes its picture; an ImageBitmap decodes off the main
+ * thread, unseen by both, and on a loaded machine that command captured the
+ * page before its first frame (a blank canvas and an empty HUD).
+ */
+function mainThreadImages(parser) {
+  parser.textureLoader = new THREE.TextureLoader(parser.options.manager);
+  return {name: 'pmap_main_thread_images'};
+}
+
 function parseGlb(glb) {
-  return new Promise((resolve, reject) => new GLTFLoader().parse(glb, '', resolve, reject));
+  const loader = new GLTFLoader();
+  loader.register(mainThreadImages);
+  return new Promise((resolve, reject) => loader.parse(glb, '', resolve, reject));
 }
 
 /** The glTF scene (y up) under a group that turns it back to z up. */
