@@ -37,6 +37,29 @@ void OnlineStage::addScan(const points::PointMap& map, std::size_t record) {
   }
 }
 
+void OnlineStage::moveScans(const points::PointMap& map, const std::vector<std::size_t>& moved) {
+  OnlineRepair repair;
+  std::vector<std::int32_t> indices;
+  std::vector<Eigen::Vector3d> positions;
+  for (const std::size_t record : moved) {
+    const points::ScanRecord& s = map.scans()[record];
+    for (std::size_t i = s.first_point; i < s.first_point + s.num_points && i < em_.points(); ++i) {
+      indices.push_back(static_cast<std::int32_t>(i));  // the EM's order is the map's (addScan)
+      positions.push_back(map.xyz()[i]);
+    }
+    ++repair.scans;
+  }
+  if (indices.empty()) {
+    return;
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  repair.update = em_.movePoints(indices, positions);
+  repair.ms = 1000.0 * std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  seconds_ += repair.ms / 1000.0;
+  repair.points = indices.size();
+  repairs_.push_back(repair);
+}
+
 void OnlineStage::writeSnapshot(const points::PointMap& map) const {
   const std::filesystem::path file =
       out_dir_ / products::OutputLayout::snapshotFile(history_.size());

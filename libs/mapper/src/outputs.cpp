@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <numeric>
 
 #include "pmap/common/atomic_file.h"
 #include "pmap/common/interrupt.h"
@@ -77,6 +78,23 @@ json percentiles(std::vector<double> v) {
     return v[std::min(v.size() - 1, k == 0 ? 0 : k - 1)];
   };
   return {{"p50", rank(0.5)}, {"p99", rank(0.99)}, {"max", v.back()}};
+}
+
+// The online map's repairs after loop closures (doc/outputs.md).
+json repairSummary(const std::vector<OnlineRepair>& repairs) {
+  std::size_t scans = 0;
+  std::size_t points = 0;
+  std::vector<double> ms;
+  for (const OnlineRepair& r : repairs) {
+    scans += r.scans;
+    points += r.points;
+    ms.push_back(r.ms);
+  }
+  return {{"count", repairs.size()},
+          {"scans_moved", scans},
+          {"points_moved", points},
+          {"ms_total", std::accumulate(ms.begin(), ms.end(), 0.0)},
+          {"ms", percentiles(ms)}};
 }
 
 // Online-mode keys: per-scan EM and pose timings (doc/outputs.md).
@@ -227,7 +245,12 @@ json summaryJson(const MapperArgs& args, const MappingResult& r, const StageCloc
                                   {"rejected_by_chi2", l.rejected_chi2},
                                   {"accepted", l.accepted},
                                   {"search_s", l.search_s},
-                                  {"solve_s", l.solve_s}};
+                                  {"solve_s", l.solve_s},
+                                  {"trajectory_rewrites", poses.corrections},
+                                  {"structure_scans_moved", points.scans_moved}};
+    if (r.planar && !r.planar->repairs.empty()) {
+      s["poses"]["loop_closure"]["online_repairs"] = repairSummary(r.planar->repairs);
+    }
   }
   s["duration_s"] = r.input.duration();
   s["mode"] = toString(r.kind);

@@ -68,6 +68,9 @@ class RawlogRun {
       processPoses(stage, step);
       {
         auto in_map = clock_.enter(Stage::kMap);
+        if (stage.corrections() != corrections_) {
+          followPoses(stage);
+        }
         collect(step);
         placer_.drain(stage.trajectory(), stage.fixed());
       }
@@ -185,10 +188,12 @@ class RawlogRun {
                        "give --poses FILE)");
     }
     placer_.drain(stage.trajectory(), true);
+    followPoses(stage);  // the map (offline) or its repair (online) uses the final poses
     result_.poses.trajectory = stage.trajectory();
     result_.poses.motion = stage.gate().stats();
     if (const poses::LoopClosingBackEnd* loops = stage.loops()) {
       result_.poses.loops = loops->stats();
+      result_.poses.corrections = stage.corrections();
     }
     const std::string dropped = stage.gate().summary(
         args_.poses.empty() ? "odometry readings or increments" : "given poses");
@@ -202,10 +207,26 @@ class RawlogRun {
       result_.kind = RunKind::kOnline;
       PlanarResult planar;
       planar.online = online_->history();
+      planar.repairs = online_->repairs();
       planar.map = online_->map();
       planar.message = "online over " + std::to_string(planar.online.size()) + " scans, " +
                        std::to_string(planar.map.surfaces.size()) + " surfaces";
       result_.planar = std::move(planar);
+    }
+  }
+
+  // A loop closure rewrote the past trajectory: the scans placed before move
+  // with it, and so do their measurements in the online EM (issue 15 item 4).
+  void followPoses(const poses::PoseStage& stage) {
+    corrections_ = stage.corrections();
+    if (corrections_ == 0) {
+      return;
+    }
+    const std::vector<std::size_t> moved = placer_.follow(stage.trajectory());
+    result_.points.scans_moved += moved.size();
+    if (online_ && !unorganised_ && !moved.empty()) {
+      auto in_em = clock_.enter(Stage::kEm);
+      online_->moveScans(result_.points.map, moved);
     }
   }
 
@@ -241,6 +262,7 @@ class RawlogRun {
   LiveView* live_;
   std::unique_ptr<OnlineStage> online_;
   bool unorganised_ = false;
+  std::size_t corrections_ = 0;  ///< the pose stage's corrections() the map follows
   points::RawMeshBuilder mesh_;
   points::ScanPlacer placer_;
   bool seen_any_ = false;

@@ -33,4 +33,21 @@ std::size_t PointMap::addScan(const input::StructureScan& scan,
   return scans_.size() - 1;
 }
 
+void PointMap::moveScan(std::size_t record, const mrpt::math::TPose3D& robot_pose) {
+  ScanRecord& s = scans_.at(record);
+  const mrpt::poses::CPose3D old_robot(s.robot_pose);
+  const mrpt::poses::CPose3D new_robot(robot_pose);
+  const Eigen::Matrix3d r_old = old_robot.getRotationMatrix().asEigen();
+  const Eigen::Matrix3d r_new = new_robot.getRotationMatrix().asEigen();
+  const Eigen::Vector3d t_old(old_robot.x(), old_robot.y(), old_robot.z());
+  const Eigen::Vector3d t_new(new_robot.x(), new_robot.y(), new_robot.z());
+  const Eigen::Matrix3d rot = r_new * r_old.transpose();
+  for (std::size_t i = s.first_point; i < s.first_point + s.num_points; ++i) {
+    xyz_[i] = rot * (xyz_[i] - t_old) + t_new;
+  }
+  const mrpt::poses::CPose3D sensor_on_robot = mrpt::poses::CPose3D(s.sensor_pose) - old_robot;
+  s.sensor_pose = (new_robot + sensor_on_robot).asTPose();
+  s.robot_pose = robot_pose;
+}
+
 }  // namespace pmap::points

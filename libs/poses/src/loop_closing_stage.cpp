@@ -87,6 +87,7 @@ void LoopClosingStage::onScan(double t, const mrpt::obs::CObservation2DRangeScan
 }
 
 void LoopClosingStage::recomputeAll() {
+  ++corrections_;
   corrected_ = Trajectory();
   for (std::size_t i = 0; i < sample_keyframe_.size(); ++i) {
     const TimedPose c = correctedSample(i);

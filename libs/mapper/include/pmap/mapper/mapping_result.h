@@ -72,6 +72,7 @@ struct PoseResult {
   poses::PoseStats stats;
   poses::MotionGateStats motion;                 ///< odometry / given poses dropped as implausible
   std::optional<poses::LoopClosureStats> loops;  ///< with [Poses] loop_closure = true
+  std::size_t corrections = 0;                   ///< loop closures that rewrote the past trajectory
   /// Wall time of the pose stage for each input step that carried a
   /// pose-laser scan (ms).
   std::vector<double> step_ms;
@@ -82,6 +83,9 @@ struct PointsResult {
   points::PointMap map;
   points::PlacementStats placement;
   std::vector<std::array<std::uint32_t, 3>> raw_triangles;
+  /// Scan moves after loop closures rewrote the past trajectory
+  /// (ScanPlacer::follow; a scan moved twice counts twice).
+  std::size_t scans_moved = 0;
 };
 
 /// How the offline EM ended (absent for the online EM, which has no end).
@@ -97,6 +101,7 @@ struct PlanarResult {
   std::string message;
   std::optional<OfflineRun> offline;           ///< the offline EM's run
   std::vector<OnlineRecord> online;            ///< the online EM: one record per structure scan
+  std::vector<OnlineRepair> repairs;           ///< the online map's repairs after loop closures
   std::optional<refine::RefineResult> refine;  ///< the refinement (applied to `map`)
 };
 

@@ -23,6 +23,14 @@ struct OnlineRecord {
   em::OnlineUpdate update;
 };
 
+/// One repair of the online map after a loop closure moved past scans.
+struct OnlineRepair {
+  std::size_t scans = 0;   ///< scans that moved
+  std::size_t points = 0;  ///< measurements moved (OnlineEm::movePoints)
+  double ms = 0;           ///< the EM's share of the repair
+  em::OnlineUpdate update;
+};
+
 class OnlineStage {
  public:
   /// `snapshot_every` > 0 writes OUT_DIR/snapshots/map_NNNNNN.wrl
@@ -35,7 +43,14 @@ class OnlineStage {
   /// pmap::throwIfInterrupted() first.
   void addScan(const points::PointMap& map, std::size_t record);
 
+  /// After a loop closure moved the scans `moved` of `map` (already moved
+  /// there, ScanPlacer::follow): their measurements move in the EM too, and
+  /// the surfaces holding them are refitted (OnlineEm::movePoints; work
+  /// O(moved measurements) plus one capped refit per surface touched).
+  void moveScans(const points::PointMap& map, const std::vector<std::size_t>& moved);
+
   const std::vector<OnlineRecord>& history() const { return history_; }
+  const std::vector<OnlineRepair>& repairs() const { return repairs_; }
   double seconds() const { return seconds_; }
   em::PlanarMap map() const { return em_.map(); }
 
@@ -47,6 +62,7 @@ class OnlineStage {
   std::filesystem::path out_dir_;
   int snapshot_every_;
   std::vector<OnlineRecord> history_;
+  std::vector<OnlineRepair> repairs_;
   double seconds_ = 0;
 };
 

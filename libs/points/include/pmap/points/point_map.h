@@ -34,6 +34,10 @@ class PointMap {
   /// Returns the index of the new ScanRecord.
   std::size_t addScan(const input::StructureScan& scan, const mrpt::math::TPose3D& robot_pose);
 
+  /// Moves scan `record` rigidly to a new robot pose: its points, robot and
+  /// sensor poses follow (p' = T_new T_old^-1 p). Point indices are kept.
+  void moveScan(std::size_t record, const mrpt::math::TPose3D& robot_pose);
+
   std::size_t size() const { return xyz_.size(); }
   const std::vector<Eigen::Vector3d>& xyz() const { return xyz_; }
   const std::vector<std::int32_t>& scanIndex() const { return scan_; }

@@ -9,6 +9,7 @@
 
 #include <deque>
 #include <functional>
+#include <vector>
 
 #include "pmap/input/structure_points.h"
 #include "pmap/points/point_map.h"
@@ -33,6 +34,13 @@ class ScanPlacer {
   /// Places the pending scans whose pose is final. `final_all`: the whole
   /// trajectory is final (given poses, or the end of the input).
   void drain(const poses::Trajectory& trajectory, bool final_all);
+
+  /// Re-places every placed scan at `trajectory`'s pose at its time, after
+  /// the past trajectory changed (a loop closure): scans whose pose moved by
+  /// more than 0.1 mm or 1e-5 rad move rigidly (PointMap::moveScan); scans
+  /// the trajectory no longer covers stay. Returns the moved scan records.
+  /// Work: O(placed scans + moved points).
+  std::vector<std::size_t> follow(const poses::Trajectory& trajectory);
 
   /// Places every pending scan at `pose` (the single-frame identity case).
   void placeAllAt(const mrpt::math::TPose3D& pose);

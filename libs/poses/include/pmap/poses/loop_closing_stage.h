@@ -33,6 +33,8 @@ class LoopClosingStage {
   void sync();
 
   const Trajectory& trajectory() const { return corrected_; }
+  /// How many times a loop closure rewrote the past trajectory so far.
+  std::size_t corrections() const { return corrections_; }
   const LoopClosingBackEnd& backEnd() const { return back_end_; }
 
  private:
@@ -44,6 +46,7 @@ class LoopClosingStage {
   std::vector<std::size_t> sample_keyframe_;  ///< per sample of the tracker's trajectory
   Trajectory corrected_;
   TimedPose corrected_front_last_;  ///< the tracker's last sample when last synced
+  std::size_t corrections_ = 0;
 };
 
 }  // namespace pmap::poses

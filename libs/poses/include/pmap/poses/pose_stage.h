@@ -40,6 +40,9 @@ class PoseStage {
   const MotionGate& gate() const { return gate_; }
   /// The loop-closing back end; null without loop closure.
   const LoopClosingBackEnd* loops() const { return slam_ ? &slam_->backEnd() : nullptr; }
+  /// How many times a loop closure rewrote the past trajectory (0 without
+  /// loop closure): scans placed before then must follow (ScanPlacer::follow).
+  std::size_t corrections() const { return slam_ ? slam_->corrections() : 0; }
 
   static LoopClosureOptions disabledLoops() {
     LoopClosureOptions o;
