@@ -94,10 +94,9 @@ TEST(HeaderLayout, Item14_EveryPublicHeaderIsUsedOutsideItsLibrary) {
   ASSERT_GT(public_headers.size(), 50u);
   const std::set<HeaderKey> used = usedFromOutside(root, public_headers);
   for (const auto& [key, path] : public_headers) {
-    EXPECT_TRUE(used.count(key) != 0)
-        << fs::relative(path, root).string()
-        << " is used inside its library alone: move it to libs/" << key.first << "/internal/pmap/"
-        << key.first << "/";
+    EXPECT_TRUE(used.count(key) != 0) << fs::relative(path, root).string()
+                                      << " is used inside its library alone: move it to libs/"
+                                      << key.first << "/internal/pmap/" << key.first << "/";
   }
 }
 
