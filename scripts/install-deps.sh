@@ -8,6 +8,7 @@ cd "$(dirname "$0")/.."
 packages=(
   build-essential cmake clang-format
   libmrpt-obs-dev libmrpt-maps-dev libmrpt-slam-dev libmrpt-opengl-dev libmrpt-gui-dev
+  libmrpt-graphs-dev
   libmrpt-tclap-dev mrpt-common
   libeigen3-dev libopencv-dev libceres-dev liboctomap-dev nlohmann-json3-dev zlib1g-dev
   libgtest-dev libbenchmark-dev

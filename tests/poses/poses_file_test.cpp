@@ -1,6 +1,7 @@
 #include "pmap/poses/poses_file.h"
 
 #include <gtest/gtest.h>
+#include <mrpt/graphs/CNetworkOfPoses.h>
 
 #include <cmath>
 #include <fstream>
@@ -85,6 +86,38 @@ TEST(PosesFile, Item6_WritesTheTumFormat) {
   const double yaw =
       std::atan2(2 * (q[7] * q[6] + q[4] * q[5]), 1 - 2 * (q[5] * q[5] + q[6] * q[6]));
   EXPECT_NEAR(yaw, -3.1, 1e-6);
+}
+
+// Issue 15 item 6: poses.graph is read back by MRPT's own graph class with
+// the same nodes, edges and information matrices.
+TEST(PosesFile, Item15_GraphFileIsReadByMrpt) {
+  const auto dir = testing::freshTestDir("poses_graph");
+  PoseGraph graph;
+  graph.addNode({0, 0, 0});
+  graph.addNode({1.25, 0.5, 0.3});
+  graph.addNode({2.5, -1.0, -2.9});
+  Eigen::Matrix3d info;
+  info << 400, 12, -3, 12, 900, 7, -3, 7, 3000;
+  graph.addEdge({0, 1, {1.2, 0.45, 0.31}, info, false});
+  graph.addEdge({1, 2, {1.0, -1.5, -3.0}, Eigen::Matrix3d::Identity() * 50.0, false});
+  graph.addEdge({0, 2, {2.5, -1.0, -2.9}, Eigen::Matrix3d::Identity() * 2500.0, true});
+  writeGraphFile(dir / "poses.graph", graph);
+
+  mrpt::graphs::CNetworkOfPoses2DInf read;
+  read.loadFromTextFile((dir / "poses.graph").string());
+  ASSERT_EQ(read.nodes.size(), 3u);
+  ASSERT_EQ(read.edges.size(), 3u);
+  EXPECT_NEAR(read.nodes.at(1).x(), 1.25, 1e-9);
+  EXPECT_NEAR(read.nodes.at(2).phi(), -2.9, 1e-9);
+  const auto& e01 = read.edges.find({0, 1})->second;
+  EXPECT_NEAR(e01.mean.y(), 0.45, 1e-9);
+  EXPECT_NEAR(e01.mean.phi(), 0.31, 1e-9);
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(e01.cov_inv(r, c), info(r, c), 1e-6) << r << "," << c;
+    }
+  }
+  EXPECT_NEAR(read.edges.find({0, 2})->second.cov_inv(2, 2), 2500.0, 1e-6);
 }
 
 }  // namespace

@@ -81,7 +81,8 @@ TEST(OutputLayout, Item14_NamesEveryFileOfTheIssueAndTheReservedOnes) {
                            "octomap_10cm.bt"}) {
     EXPECT_TRUE(OutputLayout::names(name)) << name;
   }
-  for (const char* name : {"poses.graph", "grid.png", "grid.gridmap.gz", "map.simplemap"}) {
+  EXPECT_EQ(OutputLayout::find("poses.graph")->owner, Owner::kRun);
+  for (const char* name : {"grid.png", "grid.gridmap.gz", "map.simplemap"}) {
     const LayoutEntry* e = OutputLayout::find(name);
     ASSERT_NE(e, nullptr) << name;
     EXPECT_EQ(e->owner, Owner::kReserved) << name;

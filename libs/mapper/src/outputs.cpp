@@ -315,6 +315,9 @@ void writeOutputs(const MapperConfig& config, const MapperArgs& args, const Mapp
     poses::writePosesFile(dir / L::kPosesTxt, r.poses.trajectory);
     poses::writeTumFile(dir / L::kPosesTum, r.poses.trajectory);
   }
+  if (r.poses.graph) {
+    poses::writeGraphFile(dir / L::kPosesGraph, *r.poses.graph);
+  }
   throwIfInterrupted();
   if (!args.poses_only) {
     products::writeScansCsv(dir / L::kScansCsv, r.points.map);

@@ -194,6 +194,7 @@ class RawlogRun {
     if (const poses::LoopClosingBackEnd* loops = stage.loops()) {
       result_.poses.loops = loops->stats();
       result_.poses.corrections = stage.corrections();
+      result_.poses.graph = loops->graph();
     }
     const std::string dropped = stage.gate().summary(
         args_.poses.empty() ? "odometry readings or increments" : "given poses");

@@ -82,4 +82,31 @@ void writeTumFile(const std::filesystem::path& path, const Trajectory& trajector
   });
 }
 
+void writeGraphFile(const std::filesystem::path& path, const PoseGraph& graph) {
+  std::size_t loops = 0;
+  for (const PoseEdge& e : graph.edges()) {
+    loops += e.loop ? 1 : 0;
+  }
+  writeFileAtomically(path, [&](std::ostream& out) {
+    out << "# planar-mapper pose graph: " << graph.size() << " keyframes (optimised poses), "
+        << graph.edges().size() - loops << " odometry edges, " << loops << " loop closures\n";
+    out << "# VERTEX_SE2 id x y theta / EDGE_SE2 from to dx dy dtheta i_xx i_xy i_xt i_yy i_yt "
+           "i_tt (m, rad)\n";
+    char buf[512];
+    for (std::size_t i = 0; i < graph.size(); ++i) {
+      const Pose2& p = graph.node(i);
+      std::snprintf(buf, sizeof buf, "VERTEX_SE2 %zu %.9g %.9g %.9g\n", i, p.x, p.y, p.theta);
+      out << buf;
+    }
+    for (const PoseEdge& e : graph.edges()) {
+      const Eigen::Matrix3d& I = e.information;
+      std::snprintf(buf, sizeof buf,
+                    "EDGE_SE2 %zu %zu %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g\n", e.from, e.to,
+                    e.measurement.x, e.measurement.y, e.measurement.theta, I(0, 0), I(0, 1),
+                    I(0, 2), I(1, 1), I(1, 2), I(2, 2));
+      out << buf;
+    }
+  });
+}
+
 }  // namespace pmap::poses

@@ -43,7 +43,7 @@ std::vector<LayoutEntry> makeEntries() {
       {"snapshots/map_<n>.wrl", Kind::kPattern, Owner::kRun, "the map after N scans"},
       {L::kEffectiveIni, Kind::kFile, Owner::kRun, "the configuration in force"},
       {L::kManifest, Kind::kFile, Owner::kRun, "the files of the run, sizes and SHA-256"},
-      {L::kPosesGraph, Kind::kFile, Owner::kReserved, "reserved: the pose graph"},
+      {L::kPosesGraph, Kind::kFile, Owner::kRun, "the pose graph (loop closure; MRPT format)"},
       {L::kGridPng, Kind::kFile, Owner::kReserved, "reserved: the occupancy grid as a picture"},
       {L::kGridMap, Kind::kFile, Owner::kReserved, "reserved: the occupancy grid (MRPT)"},
       {L::kSimpleMap, Kind::kFile, Owner::kReserved, "reserved: the MRPT simple map"},

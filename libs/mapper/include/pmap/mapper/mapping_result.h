@@ -73,6 +73,7 @@ struct PoseResult {
   poses::MotionGateStats motion;                 ///< odometry / given poses dropped as implausible
   std::optional<poses::LoopClosureStats> loops;  ///< with [Poses] loop_closure = true
   std::size_t corrections = 0;                   ///< loop closures that rewrote the past trajectory
+  std::optional<poses::PoseGraph> graph;         ///< the optimised pose graph (loop closure)
   /// Wall time of the pose stage for each input step that carried a
   /// pose-laser scan (ms).
   std::vector<double> step_ms;

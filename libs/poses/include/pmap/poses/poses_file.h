@@ -6,6 +6,7 @@
 
 #include <filesystem>
 
+#include "pmap/poses/pose_graph.h"
 #include "pmap/poses/trajectory.h"
 
 namespace pmap::poses {
@@ -21,5 +22,12 @@ void writePosesFile(const std::filesystem::path& path, const Trajectory& traject
 /// trajectory tools (evo, the TUM scripts) read: one pose a line,
 /// "timestamp tx ty tz qx qy qz qw" (s, m, unit quaternion), '#' comments.
 void writeTumFile(const std::filesystem::path& path, const Trajectory& trajectory);
+
+/// Writes a pose graph in the text format MRPT's graph tools read and write
+/// (mrpt::graphs::CNetworkOfPoses2DInf::loadFromTextFile, g2o's 2D lines):
+///   VERTEX_SE2 id x y theta
+///   EDGE_SE2 from to dx dy dtheta i_xx i_xy i_xt i_yy i_yt i_tt
+/// (m, rad; the information's upper triangle), after '#' comment lines.
+void writeGraphFile(const std::filesystem::path& path, const PoseGraph& graph);
 
 }  // namespace pmap::poses

@@ -58,8 +58,8 @@ class OutputLayout {
   static constexpr const char* kReportIterations = "em_iterations.png";
   static constexpr const char* kReportPerScan = "em_per_scan.png";
   static constexpr const char* kSnapshotsDir = "snapshots";
-  // Reserved for the outputs of the next issue (not written yet).
-  static constexpr const char* kPosesGraph = "poses.graph";
+  static constexpr const char* kPosesGraph = "poses.graph";  ///< with loop closure
+  // Reserved for outputs of issue 15 not written yet.
   static constexpr const char* kGridPng = "grid.png";
   static constexpr const char* kGridMap = "grid.gridmap.gz";
   static constexpr const char* kSimpleMap = "map.simplemap";
