@@ -11,34 +11,16 @@
 #include <string>
 
 #include "pmap/common/error.h"
+#include "test_files.h"
 
 namespace pmap {
 namespace {
 namespace fs = std::filesystem;
+using testing::snapshot;
+using testing::writeText;
 
 fs::path tmpDir(const std::string& name) {
-  // Per process: CTest runs the test cases of one binary in parallel.
-  const fs::path dir =
-      fs::path(PMAP_TEST_TMP_DIR) / "staged_directory" / name / std::to_string(::getpid());
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return fs::canonical(dir);
-}
-
-void writeText(const fs::path& p, const std::string& text) {
-  fs::create_directories(p.parent_path());
-  std::ofstream(p, std::ios::binary) << text;
-}
-
-/// Every entry under `dir`: relative path -> content ("<dir>" for directories).
-std::map<std::string, std::string> snapshot(const fs::path& dir) {
-  std::map<std::string, std::string> out;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) {
-    std::ifstream in(e.path(), std::ios::binary);
-    out[e.path().lexically_relative(dir).string()] =
-        e.is_directory() ? "<dir>" : std::string(std::istreambuf_iterator<char>(in), {});
-  }
-  return out;
+  return testing::processTestDir("staged_directory", name);
 }
 
 /// The names in `parent` other than `target`'s own.

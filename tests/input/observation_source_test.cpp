@@ -1,6 +1,9 @@
 #include "pmap/input/observation_source.h"
 
 #include <gtest/gtest.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
+#include <cmath>
 
 #include "rawlog_fixtures.h"
 
@@ -15,6 +18,8 @@ struct Collected {
   std::size_t pose_scans = 0;
   std::size_t odometry = 0;
   std::size_t steps_with_action = 0;
+  std::vector<double> pose_apertures_deg;       ///< of the pose-laser scans handed on
+  std::vector<double> structure_apertures_deg;  ///< of the other 2D scans
   InputStats stats;
 };
 
@@ -32,6 +37,11 @@ Collected collect(const fs::path& path, SelectionOptions selection = {},
       }
       c.pose_scans += item.roles.pose_laser ? 1 : 0;
       c.odometry += item.roles.odometry ? 1 : 0;
+      if (const auto* scan =
+              dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(item.obs.get())) {
+        (item.roles.pose_laser ? c.pose_apertures_deg : c.structure_apertures_deg)
+            .push_back(scan->aperture * 180.0 / M_PI);
+      }
     }
   }
   c.stats = source.stats();
@@ -59,6 +69,29 @@ TEST(ObservationSource, AssignsRolesByLabelInBothFormats) {
   EXPECT_EQ(sf.pose_scans, 10u);
   EXPECT_EQ(sf.steps_with_action, 10u);
   EXPECT_EQ(sf.structure_indices, obs.structure_indices);
+}
+
+// Issue 15: MRPT 2.5.8's carmen2rawlog writes 0.5 deg per beam for CARMEN's
+// 180-degree FLASER scans; [Sensors] pose_laser_aperture_deg puts it right,
+// for the pose laser only, in both rawlog formats, and says it did.
+TEST(ObservationSource, Item15_PoseLaserApertureIsReplacedWhenConfigured) {
+  for (const FixtureFormat format : {FixtureFormat::kObservations, FixtureFormat::kSensoryFrames}) {
+    const fs::path log = fixture("aperture", format);
+    const Collected file = collect(log);
+    ASSERT_EQ(file.pose_apertures_deg.size(), 10u);
+    EXPECT_EQ(file.stats.aperture_replaced, 0u);
+    SensorsOptions sensors;
+    sensors.pose_laser_aperture_deg = 90.0;
+    const Collected c = collect(log, {}, sensors);
+    ASSERT_EQ(c.pose_apertures_deg.size(), 10u);
+    for (const double a : c.pose_apertures_deg) {
+      EXPECT_NEAR(a, 90.0, 1e-4);
+    }
+    EXPECT_EQ(c.structure_apertures_deg, file.structure_apertures_deg);  // not the pose laser's
+    EXPECT_EQ(c.stats.aperture_replaced, 10u);
+    EXPECT_NEAR(c.stats.file_aperture_deg, file.pose_apertures_deg.front(), 1e-4);
+    EXPECT_EQ(c.stats.used_aperture_deg, 90.0);
+  }
 }
 
 TEST(ObservationSource, StructureIndicesAreFileIndicesWhateverTheSelection) {

@@ -49,6 +49,10 @@ TEST(SensorRoles, InvalidCombinationsAreRejected) {
   EXPECT_THROW(load("[Sensors]\nstructure = none, A\n"), ConfigError);
   EXPECT_THROW(load("[Sensors]\nmax_pose_gap_s = -1\n"), ConfigError);
   EXPECT_THROW(load("[Sensors]\nstrucure = A\n"), ConfigError);
+  EXPECT_THROW(load("[Sensors]\npose_laser_aperture_deg = -1\n"), ConfigError);
+  EXPECT_THROW(load("[Sensors]\npose_laser_aperture_deg = 400\n"), ConfigError);
+  EXPECT_THROW(load("[Sensors]\npose_laser_aperture_deg = nan\n"), ConfigError);
+  EXPECT_EQ(load("[Sensors]\npose_laser_aperture_deg = 180\n").pose_laser_aperture_deg, 180.0);
 }
 
 }  // namespace

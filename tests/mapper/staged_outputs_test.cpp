@@ -25,11 +25,15 @@
 #include "pmap/products/output_layout.h"
 #include "process_runner.h"
 #include "rawlog_fixtures.h"
+#include "test_files.h"
 
 namespace pmap::mapper {
 namespace {
 namespace fs = std::filesystem;
 using products::OutputLayout;
+using testing::readText;
+using testing::snapshot;
+using testing::writeText;
 
 // --- helpers ---------------------------------------------------------------
 
@@ -50,26 +54,6 @@ fs::path fixture(const fs::path& dir, int cycles = 20) {
   o.cycles = cycles;
   testing::writeFixtureRawlog(dir / "log.rawlog", o);
   return dir / "log.rawlog";
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-void writeText(const fs::path& p, const std::string& text) {
-  fs::create_directories(p.parent_path());
-  std::ofstream(p, std::ios::binary) << text;
-}
-
-/// Every entry under `dir`: relative path -> content ("<dir>" for folders).
-std::map<std::string, std::string> snapshot(const fs::path& dir) {
-  std::map<std::string, std::string> out;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) {
-    out[e.path().lexically_relative(dir).generic_string()] =
-        e.is_directory() ? "<dir>" : slurp(e.path());
-  }
-  return out;
 }
 
 /// The files under `dir` (relative paths).
@@ -175,7 +159,7 @@ TEST(StagedOutputs, Item14_RerunLeavesExactlyTheManifestsFiles) {
   struct stat after {};
   ASSERT_EQ(::stat((out / "notes.txt").c_str(), &after), 0);
   EXPECT_EQ(after.st_ino, before.st_ino);
-  EXPECT_EQ(slurp(out / "report/mine.txt"), "the user's too");
+  EXPECT_EQ(readText(out / "report/mine.txt"), "the user's too");
   EXPECT_EQ(namesIn(dir), (std::set<std::string>{"log.rawlog", "out"}));  // no lock, no staging
 
   r = mapper({"--rawlog", log.string(), "--out", out.string(), "-q", "--poses-only"});
@@ -215,7 +199,7 @@ TEST(StagedOutputs, Item14_AFolderWrittenBeforeManifestsIsReplaced) {
   ASSERT_EQ(r.code, 0) << r.err;
   expectOneCompleteSet(dir / "out");
   EXPECT_FALSE(fs::exists(dir / "out/textures.csv"));
-  EXPECT_NE(slurp(dir / "out/report/report.html"), "an older run's");
+  EXPECT_NE(readText(dir / "out/report/report.html"), "an older run's");
 }
 
 // A crash between the two renames of a swap (file systems without
@@ -286,14 +270,15 @@ TEST(StagedOutputs, Item14_AFullTmpfsKeepsThePreviousSet) {
   if (p.exit_code == 99 || !fs::exists(dir / "rc1")) {
     GTEST_SKIP() << "no tmpfs in a private mount namespace here (unshare): " << p.err;
   }
-  EXPECT_EQ(slurp(dir / "rc1"), "0\n");
-  EXPECT_EQ(slurp(dir / "rc2"), "4\n") << slurp(dir / "err2");
-  EXPECT_NE(slurp(dir / "err2").find("disk full"), std::string::npos) << slurp(dir / "err2");
-  EXPECT_FALSE(slurp(dir / "before").empty());
-  EXPECT_EQ(slurp(dir / "after"), slurp(dir / "before"));
-  EXPECT_EQ(slurp(dir / "beside"), "out\n");  // no staging folder, no lock
-  EXPECT_EQ(slurp(dir / "rc3"), "4\n");
-  EXPECT_NE(slurp(dir / "err3").find("is a mount point"), std::string::npos) << slurp(dir / "err3");
+  EXPECT_EQ(readText(dir / "rc1"), "0\n");
+  EXPECT_EQ(readText(dir / "rc2"), "4\n") << readText(dir / "err2");
+  EXPECT_NE(readText(dir / "err2").find("disk full"), std::string::npos) << readText(dir / "err2");
+  EXPECT_FALSE(readText(dir / "before").empty());
+  EXPECT_EQ(readText(dir / "after"), readText(dir / "before"));
+  EXPECT_EQ(readText(dir / "beside"), "out\n");  // no staging folder, no lock
+  EXPECT_EQ(readText(dir / "rc3"), "4\n");
+  EXPECT_NE(readText(dir / "err3").find("is a mount point"), std::string::npos)
+      << readText(dir / "err3");
 }
 
 // --- signals -----------------------------------------------------------------
@@ -411,7 +396,7 @@ TEST(StagedOutputs, Item14_ASecondRunIsRefusedWithTheHoldersPid) {
   const auto [code, signal] = endOf(first);
   EXPECT_EQ(code, 0) << first.err();
   expectOneCompleteSet(out);
-  EXPECT_NE(slurp(out / "manifest.json").find("--playback-rate"), std::string::npos);
+  EXPECT_NE(readText(out / "manifest.json").find("--playback-rate"), std::string::npos);
   EXPECT_EQ(namesIn(dir), (std::set<std::string>{"err1.txt", "log.rawlog", "out"}));
 }
 

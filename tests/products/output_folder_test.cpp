@@ -1,28 +1,20 @@
 #include "pmap/products/output_folder.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <fstream>
 #include <functional>
 
 #include "pmap/common/error.h"
+#include "test_files.h"
 
 namespace pmap::products {
 namespace {
 namespace fs = std::filesystem;
+using testing::writeText;
 
 fs::path tmpDir(const std::string& name) {
-  const fs::path dir =
-      fs::path(PMAP_TEST_TMP_DIR) / "output_folder" / name / std::to_string(::getpid());
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-void writeText(const fs::path& p, const std::string& text) {
-  fs::create_directories(p.parent_path());
-  std::ofstream(p, std::ios::binary) << text;
+  return testing::processTestDir("output_folder", name);
 }
 
 /// A run's folder: poses.txt, points.ply and a texture, with its manifest.

@@ -1,30 +1,22 @@
 #include "pmap/products/output_manifest.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <fstream>
 
 #include "pmap/common/error.h"
 #include "pmap/common/sha256.h"
+#include "test_files.h"
 
 namespace pmap::products {
 namespace {
 namespace fs = std::filesystem;
-using nlohmann::json;
+using testing::writeText;
 
 fs::path tmpDir(const std::string& name) {
-  const fs::path dir =
-      fs::path(PMAP_TEST_TMP_DIR) / "output_manifest" / name / std::to_string(::getpid());
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
+  return testing::processTestDir("output_manifest", name);
 }
-
-void writeText(const fs::path& p, const std::string& text) {
-  fs::create_directories(p.parent_path());
-  std::ofstream(p, std::ios::binary) << text;
-}
+using nlohmann::json;
 
 OutputManifest header() {
   OutputManifest m;

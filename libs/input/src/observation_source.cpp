@@ -1,6 +1,7 @@
 #include "pmap/input/observation_source.h"
 
 #include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose3D.h>
@@ -88,6 +89,21 @@ void ObservationSource::noteFormat(RawlogFormat f) {
   }
 }
 
+// [Sensors] pose_laser_aperture_deg: the field of view the scan is taken
+// with, where the log's is wrong (doc/input.md, "Scan aperture").
+void ObservationSource::replaceAperture(mrpt::obs::CObservation& obs) {
+  const double deg = classifier_.options().pose_laser_aperture_deg;
+  auto* scan = dynamic_cast<mrpt::obs::CObservation2DRangeScan*>(&obs);
+  if (deg <= 0.0 || scan == nullptr) {
+    return;
+  }
+  if (stats_.aperture_replaced++ == 0) {
+    stats_.file_aperture_deg = scan->aperture * 180.0 / M_PI;
+    stats_.used_aperture_deg = deg;
+  }
+  scan->aperture = static_cast<float>(deg * M_PI / 180.0);
+}
+
 void ObservationSource::addObservation(const mrpt::obs::CObservation::Ptr& obs, bool selected,
                                        InputStep& step) {
   ++stats_.observations;
@@ -127,6 +143,9 @@ void ObservationSource::addObservation(const mrpt::obs::CObservation::Ptr& obs, 
     if (!item.roles.any()) {
       return;
     }
+  }
+  if (item.roles.pose_laser) {
+    replaceAperture(*obs);
   }
   stats_.pose_scans += item.roles.pose_laser ? 1 : 0;
   stats_.structure_scans += item.roles.structure ? 1 : 0;

@@ -35,6 +35,7 @@ void SensorsOptions::load(config::SectionReader& reader) {
   readRole(reader, "odometry", odometry);
   readRole(reader, "cameras", cameras);
   reader.read("max_pose_gap_s", max_pose_gap_s);
+  reader.read("pose_laser_aperture_deg", pose_laser_aperture_deg);
 }
 
 bool SensorsOptions::validate(std::string* why) const {
@@ -46,6 +47,10 @@ bool SensorsOptions::validate(std::string* why) const {
   }
   if (!(max_pose_gap_s > 0.0)) {
     *why = "max_pose_gap_s must be > 0 seconds";
+    return false;
+  }
+  if (!(pose_laser_aperture_deg >= 0.0 && pose_laser_aperture_deg <= 360.0)) {
+    *why = "pose_laser_aperture_deg must be in [0, 360] degrees (0: the scans' own)";
     return false;
   }
   if (pose_laser.empty() && structure.empty()) {

@@ -41,6 +41,11 @@ json inputSummary(const MapperArgs& args, const InputResult& r) {
   in["structure_decimated"] = st.structure_decimated;
   in["invalid_timestamps"] = st.invalid_timestamps;
   in["non_finite_poses"] = st.non_finite_poses;
+  if (st.aperture_replaced > 0) {
+    in["pose_laser_aperture"] = {{"scans_replaced", st.aperture_replaced},
+                                 {"file_deg", st.file_aperture_deg},
+                                 {"used_deg", st.used_aperture_deg}};
+  }
   in["leading_frame_skipped"] = st.leading_frame_skipped;
   in["ignored"] = st.ignored;
   in["truncated"] = !r.truncation.empty();

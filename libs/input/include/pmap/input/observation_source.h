@@ -72,6 +72,11 @@ struct InputStats {
   /// Odometry readings / actions and pose-laser scans not used for the
   /// poses: a NaN or Inf in the odometry or the sensor pose.
   std::size_t non_finite_poses = 0;
+  /// Pose-laser scans whose aperture [Sensors] pose_laser_aperture_deg
+  /// replaced, and the aperture the first of them carried (deg).
+  std::size_t aperture_replaced = 0;
+  double file_aperture_deg = 0.0;
+  double used_aperture_deg = 0.0;
   bool leading_frame_skipped = false;
   /// Observations that play no role, by "Class:label".
   std::map<std::string, std::size_t> ignored;
@@ -89,6 +94,7 @@ class ObservationSource {
  private:
   void noteFormat(RawlogFormat f);
   void addObservation(const mrpt::obs::CObservation::Ptr& obs, bool selected, InputStep& step);
+  void replaceAperture(mrpt::obs::CObservation& obs);
 
   RawlogReader& reader_;
   RoleClassifier classifier_;

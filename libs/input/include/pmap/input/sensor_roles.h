@@ -11,6 +11,9 @@
 // shipped logs have none). The single word `none` assigns no sensor to the
 // role. max_pose_gap_s bounds pose interpolation. Odometry actions of the actions/sensory-frames
 // format (CActionRobotMovement2D) carry no label and are always odometry.
+// pose_laser_aperture_deg replaces the field of view the log gives its
+// pose-laser scans (CObservation2DRangeScan::aperture), for logs converted
+// with a wrong one (doc/input.md, "Scan aperture").
 #pragma once
 
 #include <mrpt/obs/CObservation.h>
@@ -32,6 +35,9 @@ struct SensorsOptions {
   /// Longest interval between two poses across which a structure scan's pose
   /// is interpolated (s); scans in longer gaps are dropped and counted.
   double max_pose_gap_s = 1.0;
+  /// The pose laser's field of view, first to last beam (deg); 0 keeps the
+  /// aperture each scan carries.
+  double pose_laser_aperture_deg = 0.0;
 
   void load(config::SectionReader& reader);
   bool validate(std::string* why) const;

@@ -1,0 +1,25 @@
+// Files and folders for tests: fresh per-process folders, whole-file text
+// read and write, and a snapshot of a folder's contents to compare.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+namespace pmap::testing {
+
+/// A fresh, empty folder `<test tmp>/<group>/<name>/<pid>`, canonical: CTest
+/// runs the test cases of one binary in parallel processes.
+std::filesystem::path processTestDir(const std::string& group, const std::string& name);
+
+/// Writes `text` to `path`, creating its folders.
+void writeText(const std::filesystem::path& path, const std::string& text);
+
+/// The whole file's bytes ("" when it cannot be read).
+std::string readText(const std::filesystem::path& path);
+
+/// Every entry under `dir`: relative path ('/'-separated) -> content, "<dir>"
+/// for folders.
+std::map<std::string, std::string> snapshot(const std::filesystem::path& dir);
+
+}  // namespace pmap::testing
