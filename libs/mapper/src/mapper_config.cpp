@@ -104,10 +104,13 @@ void OutputOptions::load(config::SectionReader& reader) {
   reader.read("raw_map", raw_map);
   reader.read("raw_max_edge_m", raw_mesh.max_edge_m);
   reader.read("scene_points", scene_points);
+  reader.read("laser_maps", laser_maps.enabled);
+  reader.read("grid_resolution_m", laser_maps.resolution_m);
+  reader.read("grid_max_range_m", laser_maps.max_range_m);
 }
 
 bool OutputOptions::validate(std::string* why) const {
-  return raw_mesh.validate(why);
+  return raw_mesh.validate(why) && laser_maps.validate(why);
 }
 
 void PlanarEmSection::load(config::SectionReader& r) {

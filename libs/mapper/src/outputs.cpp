@@ -257,6 +257,18 @@ json summaryJson(const MapperArgs& args, const MappingResult& r, const StageCloc
       s["poses"]["loop_closure"]["online_repairs"] = repairSummary(r.planar->repairs);
     }
   }
+  if (poses.laser_maps) {
+    const poses::GridInfo& g = poses.laser_maps->info;
+    s["poses"]["grid"] = {{"resolution_m", g.resolution_m},
+                          {"x_min_m", g.x_min},
+                          {"x_max_m", g.x_max},
+                          {"y_min_m", g.y_min},
+                          {"y_max_m", g.y_max},
+                          {"cols", g.cols},
+                          {"rows", g.rows},
+                          {"scans", g.scans},
+                          {"scans_unplaced", g.scans_unplaced}};
+  }
   s["duration_s"] = r.input.duration();
   s["mode"] = toString(r.kind);
   s["warnings"] = r.warnings;
@@ -322,6 +334,11 @@ void writeOutputs(const MapperConfig& config, const MapperArgs& args, const Mapp
   }
   if (r.poses.graph) {
     poses::writeGraphFile(dir / L::kPosesGraph, *r.poses.graph);
+  }
+  if (r.poses.laser_maps) {
+    poses::writeGridPng((dir / L::kGridPng).string(), r.poses.laser_maps->grid);
+    poses::writeGridMap((dir / L::kGridMap).string(), r.poses.laser_maps->grid);
+    poses::writeSimpleMap((dir / L::kSimpleMap).string(), r.poses.laser_maps->simplemap);
   }
   throwIfInterrupted();
   if (!args.poses_only) {

@@ -1,5 +1,6 @@
 #include "rawlog_run.h"
 
+#include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/system/datetime.h>
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include "pmap/input/label_inventory.h"
 #include "pmap/input/rawlog_reader.h"
 #include "pmap/points/raw_mesh.h"
+#include "pmap/poses/laser_maps.h"
 #include "pmap/poses/pose_stage.h"
 #include "pmap/poses/poses_file.h"
 
@@ -66,6 +68,7 @@ class RawlogRun {
         pacer.waitFor(mrpt::Clock::toDouble(step.observations.front().obs->timestamp));
       }
       processPoses(stage, step);
+      keepLaserScans(stage, step);
       {
         auto in_map = clock_.enter(Stage::kMap);
         if (stage.corrections() != corrections_) {
@@ -117,6 +120,20 @@ class RawlogRun {
     }
     if (carriesPoses(step)) {
       result_.poses.step_ms.push_back(1000.0 * since(t0));
+    }
+  }
+
+  // The pose-laser scans the grid and the simple map will hold (laser_maps.h).
+  void keepLaserScans(const poses::PoseStage& stage, const input::InputStep& step) {
+    if (!args_.poses.empty() || stage.trajectory().empty()) {
+      return;
+    }
+    for (const auto& item : step.observations) {
+      if (item.roles.pose_laser) {
+        laser_log_.add(mrpt::Clock::toDouble(item.obs->timestamp),
+                       stage.trajectory().poses().back().pose,
+                       std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(item.obs));
+      }
     }
   }
 
@@ -190,6 +207,8 @@ class RawlogRun {
     placer_.drain(stage.trajectory(), true);
     followPoses(stage);  // the map (offline) or its repair (online) uses the final poses
     result_.poses.trajectory = stage.trajectory();
+    result_.poses.laser_maps =
+        poses::buildLaserMaps(laser_log_, stage.trajectory(), config_.sensors.max_pose_gap_s);
     result_.poses.motion = stage.gate().stats();
     if (const poses::LoopClosingBackEnd* loops = stage.loops()) {
       result_.poses.loops = loops->stats();
@@ -266,6 +285,7 @@ class RawlogRun {
   std::size_t corrections_ = 0;  ///< the pose stage's corrections() the map follows
   points::RawMeshBuilder mesh_;
   points::ScanPlacer placer_;
+  poses::LaserScanLog laser_log_{config_.output.laser_maps};
   bool seen_any_ = false;
 };
 

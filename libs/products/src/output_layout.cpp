@@ -44,9 +44,9 @@ std::vector<LayoutEntry> makeEntries() {
       {L::kEffectiveIni, Kind::kFile, Owner::kRun, "the configuration in force"},
       {L::kManifest, Kind::kFile, Owner::kRun, "the files of the run, sizes and SHA-256"},
       {L::kPosesGraph, Kind::kFile, Owner::kRun, "the pose graph (loop closure; MRPT format)"},
-      {L::kGridPng, Kind::kFile, Owner::kReserved, "reserved: the occupancy grid as a picture"},
-      {L::kGridMap, Kind::kFile, Owner::kReserved, "reserved: the occupancy grid (MRPT)"},
-      {L::kSimpleMap, Kind::kFile, Owner::kReserved, "reserved: the MRPT simple map"},
+      {L::kGridPng, Kind::kFile, Owner::kRun, "the pose laser's occupancy grid as a picture"},
+      {L::kGridMap, Kind::kFile, Owner::kRun, "the pose laser's occupancy grid (MRPT)"},
+      {L::kSimpleMap, Kind::kFile, Owner::kRun, "the pose laser's scans and poses (MRPT)"},
       {L::kEvalJson, Kind::kFile, Owner::kEvaluation, "map-eval's evaluation"},
       {"octomap_<x>cm.bt", Kind::kPattern, Owner::kEvaluation, "map-eval's OctoMap baselines"},
   };

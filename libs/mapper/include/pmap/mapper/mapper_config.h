@@ -15,6 +15,7 @@
 #include "pmap/input/sensor_roles.h"
 #include "pmap/points/raw_mesh.h"
 #include "pmap/poses/icp_pose_tracker.h"
+#include "pmap/poses/laser_maps.h"
 #include "pmap/poses/loop_closure.h"
 #include "pmap/poses/motion_gate.h"
 #include "pmap/refine/refine_options.h"
@@ -37,9 +38,10 @@ struct PosesSection {
 
 /// [Output]
 struct OutputOptions {
-  bool raw_map = true;              ///< write raw.wrl, the paper's raw polygon map
-  points::RawMeshOptions raw_mesh;  ///< raw_max_edge_m
-  bool scene_points = false;        ///< map.3Dscene also holds the raw points
+  bool raw_map = true;                ///< write raw.wrl, the paper's raw polygon map
+  points::RawMeshOptions raw_mesh;    ///< raw_max_edge_m
+  bool scene_points = false;          ///< map.3Dscene also holds the raw points
+  poses::LaserMapOptions laser_maps;  ///< grid.png, grid.gridmap.gz, map.simplemap
   void load(config::SectionReader& reader);
   bool validate(std::string* why) const;
 };

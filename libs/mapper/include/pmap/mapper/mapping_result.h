@@ -19,6 +19,7 @@
 #include "pmap/points/point_map.h"
 #include "pmap/points/scan_placer.h"
 #include "pmap/poses/icp_pose_tracker.h"
+#include "pmap/poses/laser_maps.h"
 #include "pmap/poses/loop_closure.h"
 #include "pmap/poses/motion_gate.h"
 #include "pmap/poses/trajectory.h"
@@ -74,6 +75,9 @@ struct PoseResult {
   std::optional<poses::LoopClosureStats> loops;  ///< with [Poses] loop_closure = true
   std::size_t corrections = 0;                   ///< loop closures that rewrote the past trajectory
   std::optional<poses::PoseGraph> graph;         ///< the optimised pose graph (loop closure)
+  /// The pose laser's grid and simple map from the final poses ([Output]
+  /// laser_maps; absent with --poses FILE or without pose-laser scans).
+  std::optional<poses::LaserMaps> laser_maps;
   /// Wall time of the pose stage for each input step that carried a
   /// pose-laser scan (ms).
   std::vector<double> step_ms;
