@@ -110,6 +110,14 @@ TEST(LiveView, Item1_SceneObjectsStayForTheWindowsWholeLife) {
     const LiveViewState s = view.state();
     EXPECT_EQ(s.objects, first.objects) << "update " << r << " replaced scene objects";
     EXPECT_EQ(s.path_segments, r);
+    EXPECT_EQ(s.loop_segments, r / 5) << "update " << r;
+    if (r % 5 == 4) {  // issue 15: a loop closure every fifth scan
+      std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> loops;
+      for (std::size_t k = 0; k <= r / 5; ++k) {
+        loops.emplace_back(Eigen::Vector3d(0.5 * k, 0, 0.1), Eigen::Vector3d(0.5 * k, 1, 0.1));
+      }
+      view.setLoops(std::move(loops));
+    }
   }
   view.finish(corridorModel(map), map);
   const LiveViewState last = view.state();

@@ -101,5 +101,58 @@ TEST(ScanMatcher, NothingAboveTheThresholdIsNotFound) {
   EXPECT_FALSE(matcher.match(other, window, 0.8).found);
 }
 
+// Issue 15: the runner-up outside the best pose's neighbourhood tells an
+// ambiguous place (a corridor, where straight walls match at any shift along
+// it) from a unique one (a room with boxes).
+TEST(ScanMatcher, Item15_TheRunnerUpTellsAnAmbiguousPlaceFromAUniqueOne) {
+  std::vector<Eigen::Vector2d> corridor;  // two 30 m walls 2 m apart
+  for (double t = 0; t < 30.0; t += 0.03) {
+    corridor.emplace_back(t, -1.0);
+    corridor.emplace_back(t, 1.0);
+  }
+  std::vector<Eigen::Vector2d> piece;  // 6 m of it, seen from (15, 0)
+  for (const auto& p : corridor) {
+    if (p.x() > 12.0 && p.x() < 18.0) {
+      piece.push_back(p);
+    }
+  }
+  const Pose2 truth{15.0, 0.0, 0.0};
+  MatchWindow window;
+  window.guess = {14.0, 0.2, 0.0};
+  window.linear_m = 3.0;
+  window.angular_deg = 10.0;
+  MatchWindow near;
+  near.linear_m = 1.0;
+  near.angular_deg = 5.0;
+
+  const ScanMatcher in_corridor(corridor, ScanMatchOptions{});
+  const auto query = seenFrom(piece, truth, 0.01, 2);
+  const ScanMatch best = in_corridor.match(query, window, 0.3);
+  ASSERT_TRUE(best.found);
+  near.guess = best.pose;
+  const ScanMatch runner_up = in_corridor.matchOutside(query, window, near, 0.9 * best.score);
+  ASSERT_TRUE(runner_up.found) << "a corridor looks the same 1 m further";
+  EXPECT_GE(
+      std::max(std::abs(runner_up.pose.x - best.pose.x), std::abs(runner_up.pose.y - best.pose.y)),
+      1.0 - 1e-9);
+  EXPECT_GE(runner_up.score, 0.9 * best.score);
+
+  const auto world = room(8.0, 5.0, true);
+  const Pose2 in_room{3.2, 2.1, 0.35};
+  const ScanMatcher room_matcher(world, ScanMatchOptions{});
+  MatchWindow around_room;
+  around_room.guess = {3.0, 2.0, 0.3};
+  around_room.linear_m = 2.0;
+  around_room.angular_deg = 20.0;
+  const auto room_query = seenFrom(world, in_room, 0.01, 3);
+  const ScanMatch room_best = room_matcher.match(room_query, around_room, 0.3);
+  ASSERT_TRUE(room_best.found);
+  EXPECT_NEAR(room_best.pose.x, in_room.x, 0.05);
+  near.guess = room_best.pose;
+  EXPECT_FALSE(
+      room_matcher.matchOutside(room_query, around_room, near, 0.9 * room_best.score).found)
+      << "the room with boxes is unique in its window";
+}
+
 }  // namespace
 }  // namespace pmap::poses

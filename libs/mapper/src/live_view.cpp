@@ -47,7 +47,8 @@ struct Content {
   std::vector<mrpt::opengl::TTriangle> triangles;
   std::vector<mrpt::opengl::CRenderizable::Ptr> textured;
   std::vector<mrpt::math::TSegment3D> path;
-  std::array<std::vector<float>, 3> points;  ///< x, y, z
+  std::vector<mrpt::math::TSegment3D> loops;  ///< accepted loop closures
+  std::array<std::vector<float>, 3> points;   ///< x, y, z
   std::array<std::vector<float>, 3> scan;
   std::optional<mrpt::poses::CPose3D> robot;
   std::array<float, 6> grid{};  ///< x min, x max, y min, y max, z, spacing
@@ -151,6 +152,7 @@ struct LiveView::Window {
   mrpt::opengl::CSetOfTriangles::Ptr surfaces = mrpt::opengl::CSetOfTriangles::Create();
   mrpt::opengl::CSetOfObjects::Ptr textured = mrpt::opengl::CSetOfObjects::Create();
   mrpt::opengl::CSetOfLines::Ptr path = mrpt::opengl::CSetOfLines::Create();
+  mrpt::opengl::CSetOfLines::Ptr loops = mrpt::opengl::CSetOfLines::Create();
   mrpt::opengl::CPointCloud::Ptr points = mrpt::opengl::CPointCloud::Create();
   mrpt::opengl::CPointCloud::Ptr scan = mrpt::opengl::CPointCloud::Create();
   mrpt::opengl::CSetOfObjects::Ptr robot = mrpt::opengl::stock_objects::RobotPioneer();
@@ -182,9 +184,11 @@ LiveView::Window::Window(const LiveViewOptions& options) {
   points->setPointSize(style.point_size_px);
   scan->setColor(1.0, 0.1, 0.1);
   scan->setPointSize(4.0f);
+  loops->setColor(0.9, 0.1, 0.9);  // magenta: the loop closures
+  loops->setLineWidth(3.0f);
   robot->setVisibility(false);
-  const std::vector<mrpt::opengl::CRenderizable::Ptr> objects{grid,   surfaces, textured, path,
-                                                              points, scan,     robot,    probe};
+  const std::vector<mrpt::opengl::CRenderizable::Ptr> objects{
+      grid, surfaces, textured, path, loops, points, scan, robot, probe};
   SceneLock lock(*window);
   for (const auto& obj : objects) {
     lock.viewport().insert(obj);
@@ -204,6 +208,8 @@ void LiveView::Window::apply(Content& c, const CameraChange& camera) {
   }
   path->clear();
   path->appendLines(c.path);
+  loops->clear();
+  loops->appendLines(c.loops);
   points->setAllPoints(c.points[0], c.points[1], c.points[2]);
   scan->setAllPoints(c.scan[0], c.scan[1], c.scan[2]);
   robot->setVisibility(c.robot.has_value());
@@ -279,6 +285,10 @@ bool LiveView::due() const {
          Clock::now() - last_ >= std::chrono::duration<double>(1.0 / options_.max_rate_hz);
 }
 
+void LiveView::setLoops(std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> segments) {
+  loops_ = std::move(segments);
+}
+
 void LiveView::update(const points::PointMap& map, std::size_t record,
                       const em::PlanarMap* planar) {
   last_ = Clock::now();
@@ -301,6 +311,10 @@ void LiveView::update(const points::PointMap& map, std::size_t record,
 void LiveView::show(const products::MapModel& model, const points::PointMap& map,
                     std::size_t record, bool final_map) {
   Content c = contentOf(withoutCeilings(model));
+  for (const auto& [a, b] : loops_) {
+    c.loops.emplace_back(mrpt::math::TPoint3D(a.x(), a.y(), a.z()),
+                         mrpt::math::TPoint3D(b.x(), b.y(), b.z()));
+  }
   if (model.quads.empty() && model.fine.triangles.empty()) {
     appendPoints(c.points, map.xyz(), 0, map.size());  // offline mode: the points until the map
   }
@@ -348,6 +362,7 @@ LiveViewState LiveView::state() const {
   s.surface_triangles = w.surfaces->getTrianglesCount();
   s.textured_objects = w.textured->size();
   s.path_segments = w.path->size();
+  s.loop_segments = w.loops->size();
   s.map_points = w.points->size();
   s.scan_points = w.scan->size();
   w.window->getCameraPointingToPoint(s.camera_target.x(), s.camera_target.y(), s.camera_target.z());

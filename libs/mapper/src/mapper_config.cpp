@@ -89,6 +89,8 @@ void PosesSection::load(config::SectionReader& r) {
   r.read("loop_submap_path_m", l.submap_path_m);
   r.read("loop_query_path_m", l.query_path_m);
   r.read("loop_min_score", l.min_score);
+  r.read("loop_max_ambiguity", l.max_ambiguity);
+  r.read("loop_ambiguity_distance_m", l.ambiguity_distance_m);
   r.read("loop_max_free_space_conflict", l.max_free_space_conflict);
   r.read("loop_free_space_margin_m", l.free_space_margin_m);
   r.read("loop_min_same_side_ratio", l.min_same_side_ratio);

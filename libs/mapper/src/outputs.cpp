@@ -246,6 +246,7 @@ json summaryJson(const MapperArgs& args, const MappingResult& r, const StageCloc
     s["poses"]["loop_closure"] = {{"keyframes", l.keyframes},
                                   {"candidates", l.candidates},
                                   {"rejected_by_score", l.rejected_match},
+                                  {"rejected_as_ambiguous", l.rejected_ambiguous},
                                   {"rejected_by_free_space", l.rejected_free_space},
                                   {"rejected_by_chi2", l.rejected_chi2},
                                   {"accepted", l.accepted},

@@ -123,6 +123,22 @@ class RawlogRun {
     }
   }
 
+  // --gui: each accepted loop closure as a line between its keyframes, at
+  // their optimised positions, a little above the floor.
+  void showLoops(const poses::PoseStage& stage) {
+    const poses::LoopClosingBackEnd* loops = stage.loops();
+    if (live_ == nullptr || loops == nullptr) {
+      return;
+    }
+    std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> segments;
+    for (const poses::LoopClosure& c : loops->closures()) {
+      const poses::Pose2& a = loops->graph().node(c.older);
+      const poses::Pose2& b = loops->graph().node(c.newer);
+      segments.emplace_back(Eigen::Vector3d(a.x, a.y, 0.1), Eigen::Vector3d(b.x, b.y, 0.1));
+    }
+    live_->setLoops(std::move(segments));
+  }
+
   // The pose-laser scans the grid and the simple map will hold (laser_maps.h).
   void keepLaserScans(const poses::PoseStage& stage, const input::InputStep& step) {
     if (!args_.poses.empty() || stage.trajectory().empty()) {
@@ -242,6 +258,7 @@ class RawlogRun {
     if (corrections_ == 0) {
       return;
     }
+    showLoops(stage);
     const std::vector<std::size_t> moved = placer_.follow(stage.trajectory());
     result_.points.scans_moved += moved.size();
     if (online_ && !unorganised_ && !moved.empty()) {

@@ -55,6 +55,10 @@ bool LoopClosureOptions::validate(std::string* why) const {
     *why = "search_growth and search_angle_growth_deg_per_m must be >= 0";
     return false;
   }
+  if (!(max_ambiguity > 0.0 && max_ambiguity <= 1.0) || !(ambiguity_distance_m >= 0.0)) {
+    *why = "loop_max_ambiguity must be in (0, 1], loop_ambiguity_distance_m >= 0";
+    return false;
+  }
   if (!(min_score >= 0.0 && min_score <= 1.0) ||
       !(max_free_space_conflict >= 0.0 && max_free_space_conflict <= 1.0) ||
       !(min_same_side_ratio >= 0.0 && min_same_side_ratio <= 1.0) ||
@@ -226,6 +230,7 @@ LoopClosingBackEnd::Verdict LoopClosingBackEnd::tryCandidate(std::size_t older,
   window.guess = between(graph_.node(older), graph_.node(k));
   window.linear_m = radius;
   window.angular_deg = angle_deg;
+  const MatchWindow search = window;
   const ScanMatch rough =
       ScanMatcher(submap, coarse).match(query, window, 0.8 * options_.min_score);
   if (!rough.found) {
@@ -234,9 +239,31 @@ LoopClosingBackEnd::Verdict LoopClosingBackEnd::tryCandidate(std::size_t older,
   window.guess = rough.pose;
   window.linear_m = 2.0 * coarse.resolution_m;
   window.angular_deg = 2.0;
-  match = ScanMatcher(submap, match_options_).match(query, window, options_.min_score);
+  const ScanMatcher fine(submap, match_options_);
+  match = fine.match(query, window, options_.min_score);
   if (!match.found) {
     return Verdict::kNoMatch;
+  }
+  // A best pose on the window's edge is no verified maximum: the score may
+  // rise beyond it (the search was cut off there).
+  const double edge_m = search.linear_m - 2.0 * match_options_.resolution_m;
+  if (std::abs(match.pose.x - search.guess.x) >= edge_m ||
+      std::abs(match.pose.y - search.guess.y) >= edge_m ||
+      std::abs(wrapAngle(match.pose.theta - search.guess.theta)) >=
+          degToRad(search.angular_deg - 1.0)) {
+    return Verdict::kAmbiguous;
+  }
+  // A place that looks the same elsewhere in the search window (a corridor's
+  // axis, a row of doors) gives no loop: the runner-up, at least
+  // ambiguity_distance_m or 5 deg from the best, must score clearly less.
+  MatchWindow near_best;
+  near_best.guess = match.pose;
+  near_best.linear_m = options_.ambiguity_distance_m;
+  near_best.angular_deg = 5.0;
+  const ScanMatch runner_up =
+      fine.matchOutside(query, search, near_best, options_.max_ambiguity * match.score);
+  if (runner_up.found) {
+    return Verdict::kAmbiguous;
   }
   if (!freeSpaceAgrees(submap_scans, query_scans, match.pose)) {
     return Verdict::kFreeSpaceConflict;
@@ -272,7 +299,9 @@ bool LoopClosingBackEnd::closeLoop() {
     ScanMatch match;
     const Verdict v = tryCandidate(j, query, radius, angle, edge, match);
     if (v != Verdict::kMatched) {
-      ++(v == Verdict::kNoMatch ? stats_.rejected_match : stats_.rejected_free_space);
+      ++(v == Verdict::kNoMatch     ? stats_.rejected_match
+         : v == Verdict::kAmbiguous ? stats_.rejected_ambiguous
+                                    : stats_.rejected_free_space);
       continue;
     }
     if (match.score > best.score) {

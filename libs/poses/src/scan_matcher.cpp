@@ -149,6 +149,13 @@ struct ScanMatcher::Search {
   double best = 0;
   Block best_block;
   bool found = false;
+  /// Level-0 blocks inside this box (angle and cell offsets, inclusive) do
+  /// not count (matchOutside); empty when lo > hi.
+  int ex_a0 = 1, ex_a1 = 0, ex_x0 = 0, ex_x1 = -1, ex_y0 = 0, ex_y1 = -1;
+  bool excluded(const Block& b) const {
+    return b.angle >= ex_a0 && b.angle <= ex_a1 && b.x >= ex_x0 && b.x <= ex_x1 && b.y >= ex_y0 &&
+           b.y <= ex_y1;
+  }
 
   double bound(const Block& b) const {
     double sum = 0;
@@ -165,6 +172,9 @@ struct ScanMatcher::Search {
         return;  // sorted: no later block can do better
       }
       if (b.level == 0) {
+        if (excluded(b)) {
+          continue;
+        }
         best = b.bound;  // at level 0 the bound is the score
         best_block = b;
         found = true;
@@ -188,6 +198,14 @@ struct ScanMatcher::Search {
 
 ScanMatch ScanMatcher::match(const std::vector<Eigen::Vector2d>& query_in,
                              const MatchWindow& window, double min_score) const {
+  MatchWindow none;
+  none.linear_m = -1.0;  // excludes nothing
+  return matchOutside(query_in, window, none, min_score);
+}
+
+ScanMatch ScanMatcher::matchOutside(const std::vector<Eigen::Vector2d>& query_in,
+                                    const MatchWindow& window, const MatchWindow& excluded,
+                                    double min_score) const {
   const std::vector<Eigen::Vector2d> query =
       thinned(query_in, options_.query_voxel_m, options_.max_query_points);
   if (query.empty() || grid_.levels.empty()) {
@@ -206,6 +224,20 @@ ScanMatch ScanMatcher::match(const std::vector<Eigen::Vector2d>& query_in,
                 min_score, {}, false};
   const Eigen::Vector2d corner(window.guess.x - window.linear_m - grid_.x0,
                                window.guess.y - window.linear_m - grid_.y0);
+  if (excluded.linear_m >= 0.0) {
+    const auto cell = [&](double v, double lo) {
+      return static_cast<int>(std::lround((v - lo) / res));
+    };
+    const double x_lo = window.guess.x - window.linear_m, y_lo = window.guess.y - window.linear_m;
+    search.ex_x0 = cell(excluded.guess.x - excluded.linear_m, x_lo);
+    search.ex_x1 = cell(excluded.guess.x + excluded.linear_m, x_lo);
+    search.ex_y0 = cell(excluded.guess.y - excluded.linear_m, y_lo);
+    search.ex_y1 = cell(excluded.guess.y + excluded.linear_m, y_lo);
+    const double da = wrapAngle(excluded.guess.theta - window.guess.theta) / step;
+    const double ha = excluded.angular_deg * M_PI / 180.0 / step;
+    search.ex_a0 = static_cast<int>(std::floor(da - ha)) + n_angles;
+    search.ex_a1 = static_cast<int>(std::ceil(da + ha)) + n_angles;
+  }
   const int top = options_.levels - 1;
   std::vector<Search::Block> roots;
   for (int a = 0; a <= 2 * n_angles; ++a) {

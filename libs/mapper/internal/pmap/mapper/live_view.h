@@ -1,8 +1,9 @@
 // planar-mapper --gui: a live 3D window while mapping (MRPT's
 // CDisplayWindow3D, as icp-slam shows its progress). It shows the growing
 // map (rectangles coloured by orientation, fine triangles, ceilings left out
-// so the view looks in), the path, the points of the current structure scan
-// and the robot, with the camera following the robot; at the end, the final
+// so the view looks in), the path, the loop closures accepted so far (a
+// magenta line between the two keyframes of each), the points of the
+// current structure scan and the robot, with the camera following the robot; at the end, the final
 // textured map, framed whole.
 //
 // Threads (MRPT 2.5.8): the window is drawn by MRPT's GUI thread, which
@@ -22,6 +23,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "pmap/em/offline_em.h"
@@ -62,8 +64,9 @@ struct LiveViewState {
   std::size_t surface_triangles = 0;  ///< untextured rectangles and fine triangles
   std::size_t textured_objects = 0;   ///< textured rectangles (the final map)
   std::size_t path_segments = 0;
-  std::size_t map_points = 0;   ///< points shown while there is no map
-  std::size_t scan_points = 0;  ///< the current structure scan
+  std::size_t loop_segments = 0;  ///< loop closures shown
+  std::size_t map_points = 0;     ///< points shown while there is no map
+  std::size_t scan_points = 0;    ///< the current structure scan
   Eigen::Vector3f camera_target = Eigen::Vector3f::Zero();
   float camera_distance_m = 0.0f;
   std::uint64_t frames_rendered = 0;  ///< by MRPT's GUI thread so far
@@ -86,6 +89,10 @@ class LiveView {
   /// map so far (may be null: the points are shown instead).
   void update(const points::PointMap& map, std::size_t record, const em::PlanarMap* planar);
 
+  /// The loop closures to show from the next update on: one segment per
+  /// closure, between its two keyframes' positions (m).
+  void setLoops(std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> segments);
+
   /// Shows the final map framed whole (mapBounds, frameBox), then waits
   /// (LiveViewOptions::hold_s). Call once, after the last update.
   void finish(const products::MapModel& model, const points::PointMap& map);
@@ -101,6 +108,7 @@ class LiveView {
   std::unique_ptr<Window> window_;
   std::chrono::steady_clock::time_point last_;
   bool shown_ = false;
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> loops_;
 };
 
 }  // namespace pmap::mapper

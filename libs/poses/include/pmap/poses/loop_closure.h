@@ -12,8 +12,11 @@
 // search_radius_m + search_growth * path), angles likewise. The best
 // candidates (at most candidates_per_keyframe, spread along the path) are
 // verified by a correlative scan-to-submap match that needs no good initial
-// guess (scan_matcher.h); a match is accepted when its score, inlier
-// fraction and RMS pass, and when, after the graph is solved with it (Cauchy
+// guess (scan_matcher.h); a match is accepted when its score passes, when
+// it is unique (not on the search window's edge, no other pose of the window
+// at least ambiguity_distance_m away scoring max_ambiguity of it: corridors
+// alias along their axis), when the beams' free space agrees, and when,
+// after the graph is solved with it (Cauchy
 // loss on loop edges), its residual stays below max_chi2: a loop that the
 // rest of the graph cannot agree with is taken out again. The work per
 // keyframe is bounded by the candidate count and the window's size.
@@ -49,6 +52,11 @@ struct LoopClosureOptions {
   /// Mean likelihood of the query points on the fine grid (sigma 5 cm) to
   /// accept a match, [0, 1]. On the ACES log true loops score 0.4-0.63.
   double min_score = 0.4;
+  /// A match is refused when another pose of the search window, at least
+  /// ambiguity_distance_m or 5 deg away, scores more than max_ambiguity of
+  /// the best, (0, 1]: the place is ambiguous (a corridor's axis).
+  double max_ambiguity = 0.9;
+  double ambiguity_distance_m = 1.0;
   /// A match is refused when more than this fraction of one side's points
   /// lie where the other side's beams passed freely (free_space.h), [0, 1].
   /// 0.1: the simulated ring's one aliased match had 0.1-0.25, its true
@@ -89,6 +97,7 @@ struct LoopClosureStats {
   std::size_t keyframes = 0;
   std::size_t candidates = 0;           ///< verified by a scan-to-submap match
   std::size_t rejected_match = 0;       ///< no pose of the window scored min_score
+  std::size_t rejected_ambiguous = 0;   ///< another pose of the window scored nearly as well
   std::size_t rejected_free_space = 0;  ///< the best pose contradicts the beams' free space
   std::size_t rejected_chi2 = 0;        ///< taken out again after solving
   std::size_t accepted = 0;
@@ -122,7 +131,7 @@ class LoopClosingBackEnd {
   Eigen::Matrix3d odometryInformation(std::size_t from, std::size_t to) const;
   bool closeLoop();
   std::vector<std::size_t> candidates(double radius) const;
-  enum class Verdict { kMatched, kNoMatch, kFreeSpaceConflict };
+  enum class Verdict { kMatched, kNoMatch, kAmbiguous, kFreeSpaceConflict };
   std::vector<Rays> scansAround(std::size_t centre, double half_path_m, bool optimised,
                                 bool only_older) const;
   bool freeSpaceAgrees(const std::vector<Rays>& submap, const std::vector<Rays>& query,

@@ -62,6 +62,11 @@ class ScanMatcher {
   /// reference is empty.
   ScanMatch match(const std::vector<Eigen::Vector2d>& query, const MatchWindow& window,
                   double min_score = 0.0) const;
+  /// As match(), but the best pose of the window outside `excluded` (a pose
+  /// within excluded.linear_m in x and y and excluded.angular_deg of
+  /// excluded.guess does not count): the runner-up of an ambiguous place.
+  ScanMatch matchOutside(const std::vector<Eigen::Vector2d>& query, const MatchWindow& window,
+                         const MatchWindow& excluded, double min_score) const;
 
  private:
   struct Grid {
