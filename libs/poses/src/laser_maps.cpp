@@ -1,5 +1,6 @@
 #include "pmap/poses/laser_maps.h"
 
+#include <mrpt/core/bits_math.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose3D.h>
@@ -11,20 +12,17 @@
 #include <limits>
 
 #include "pmap/common/error.h"
+#include "pmap/poses/loop_closing_stage.h"
 
 namespace pmap::poses {
 namespace {
 
-double degToRad(double d) {
-  return d * M_PI / 180.0;
-}
-
-// The scan as the grid should see it: max-range readings are no return.
+// The scan as the grid should see it: only its returns are valid
+// (isReturn: max-range readings are no obstacle).
 mrpt::obs::CObservation2DRangeScan withoutMaxRange(const mrpt::obs::CObservation2DRangeScan& s) {
   mrpt::obs::CObservation2DRangeScan out = s;
   for (std::size_t i = 0; i < out.getScanSize(); ++i) {
-    const float r = out.getScanRange(i);
-    if (!std::isfinite(r) || r <= 0.0f || r >= 0.999f * out.maxRange) {
+    if (!isReturn(out, i)) {
       out.setScanRangeValidity(i, false);
     }
   }
@@ -94,7 +92,7 @@ void LaserScanLog::add(double t, const mrpt::math::TPose3D& pose,
   if (last_) {
     const double moved = std::hypot(pose.x - last_->x, pose.y - last_->y);
     const double turned = std::abs(std::remainder(pose.yaw - last_->yaw, 2.0 * M_PI));
-    if (moved < options_.keep_distance_m && turned < degToRad(options_.keep_angle_deg)) {
+    if (moved < options_.keep_distance_m && turned < mrpt::DEG2RAD(options_.keep_angle_deg)) {
       return;
     }
   }

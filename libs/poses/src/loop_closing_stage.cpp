@@ -17,17 +17,20 @@ bool samePose(const TimedPose& a, const TimedPose& b) {
 
 }  // namespace
 
+bool isReturn(const mrpt::obs::CObservation2DRangeScan& scan, std::size_t i) {
+  const double r = scan.getScanRange(i);
+  return scan.getScanRangeValidity(i) && std::isfinite(r) && r > 0.0 && r < 0.999 * scan.maxRange;
+}
+
 std::vector<Eigen::Vector2d> scanPointsInRobotFrame(
     const mrpt::obs::CObservation2DRangeScan& scan) {
   std::vector<Eigen::Vector2d> out;
   const mrpt::poses::CPose3D& sensor = scan.sensorPose;
   for (std::size_t i = 0; i < scan.getScanSize(); ++i) {
-    const double r = scan.getScanRange(i);
-    // A max-range reading is no return (CARMEN logs flag them valid).
-    if (!scan.getScanRangeValidity(i) || !std::isfinite(r) || r <= 0.0 ||
-        r >= 0.999 * scan.maxRange) {
+    if (!isReturn(scan, i)) {
       continue;
     }
+    const double r = scan.getScanRange(i);
     const double a = scan.getScanAngle(i);
     const mrpt::math::TPoint3D p =
         sensor.composePoint(mrpt::math::TPoint3D(r * std::cos(a), r * std::sin(a), 0.0));

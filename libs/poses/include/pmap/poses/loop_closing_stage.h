@@ -20,7 +20,12 @@
 
 namespace pmap::poses {
 
-/// A 2D scan's valid points in the robot frame (x, y), through its sensor pose.
+/// Whether reading i of a 2D scan is a return: valid, finite, positive and
+/// short of the maximum range (CARMEN logs flag max-range readings valid).
+bool isReturn(const mrpt::obs::CObservation2DRangeScan& scan, std::size_t i);
+
+/// A 2D scan's returns (isReturn) in the robot frame (x, y), through its
+/// sensor pose.
 std::vector<Eigen::Vector2d> scanPointsInRobotFrame(const mrpt::obs::CObservation2DRangeScan& scan);
 
 class LoopClosingStage {
