@@ -5,7 +5,9 @@
 # the Kümmerle relation error of each, and the median wall time of 3 runs;
 # the pose stage with the aperture the log carries (90 deg, wrong: input.md,
 # "Scan aperture"); the occupancy grids of aces, intel and mit-csail with
-# loop closure (doc/images/radish-<log>-grid.png, 10 cm cells).
+# loop closure (doc/images/radish-<log>-grid.png, 10 cm cells); MRPT's own
+# icp-slam (Debian mrpt-apps) with its shipped icp-slam_demo_LM.ini, when
+# installed.
 # Usage: scripts/loop-closure-report.sh [BUILD_DIR] [RADISH_DIR] [RELATION_TOOL]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -36,19 +38,57 @@ median_time() {  # median_time INI OUT: median wall time (s) of 3 runs
 }
 
 row() {  # row NAME INI
-  local out="$work/$1" secs errs
-  secs=$(median_time "$2" "$out")
-  errs=$(python3 "$tool" "$out/poses.txt" "$radish/aces.scan_relations.txt")
+  local out="$work/$1"
+  scored "$1" "$out/poses.txt" "$(median_time "$2" "$out")"
+}
+
+scored() {  # scored NAME POSES SECONDS: a table row
+  local errs
+  errs=$(python3 "$tool" "$2" "$radish/aces.scan_relations.txt")
+  grep -q ' 0 relations past the end skipped' <<<"$errs" || {
+    echo "loop-closure-report: $1: relations skipped: $errs" >&2
+    exit 1
+  }
   local all short loop
   all=$(grep '^all:' <<<"$errs" | sed 's/.*translation \([^ ]*\) ± \([^ ]*\) m, rotation \([^ ]*\) ± \([^ ]*\) deg/\1 ± \2 | \3 ± \4/')
   short=$(grep '^short' <<<"$errs" | sed 's/.*translation \([^ ]*\) ± \([^ ]*\) m.*/\1 ± \2/')
   loop=$(grep '^loop' <<<"$errs" | sed 's/.*translation \([^ ]*\) ± \([^ ]*\) m, rotation \([^ ]*\) ± \([^ ]*\) deg/\1 ± \2 | \3 ± \4/')
-  echo "| $1 | $all | $short | $loop | $secs | $(python3 -c "import sys; print(round(1365 / float(sys.argv[1])))" "$secs") |"
+  echo "| $1 | $all | $short | $loop | $3 | $(python3 -c "import sys; print(round(1365 / float(sys.argv[1])))" "$3") |"
+}
+
+# icp-slam_row: MRPT's icp-slam, its shipped LM ini with the display and
+# periodic logs off, on the log as converted (icp-slam has no way to replace
+# the aperture). log_estimated_path.txt has one line per rawlog entry; the log
+# alternates ODOMETRY and FLASER, so scan i is entry 2i + 1.
+icp_slam_row() {
+  local lm=/usr/share/mrpt/config_files/icp-slam/icp-slam_demo_LM.ini
+  if ! command -v icp-slam > /dev/null || [[ ! -f $lm ]]; then
+    echo "| MRPT icp-slam, icp-slam_demo_LM.ini | not run: icp-slam (Debian mrpt-apps) not installed |||||||"
+    return
+  fi
+  sed -e "s#^logOutput_dir=.*#logOutput_dir=$work/icp-slam#" -e 's#^LOG_FREQUENCY=.*#LOG_FREQUENCY=0#' \
+    -e 's#^SAVE_3D_SCENE=.*#SAVE_3D_SCENE=0#' -e 's#^CAMERA_3DSCENE_FOLLOWS_ROBOT=.*#CAMERA_3DSCENE_FOLLOWS_ROBOT=0#' \
+    -e 's#^SHOW_PROGRESS_3D_REAL_TIME=.*#SHOW_PROGRESS_3D_REAL_TIME=false#' \
+    -e 's#^SHOW_LASER_SCANS_3D.*#SHOW_LASER_SCANS_3D = false#' "$lm" > "$work/icp-slam.ini"
+  local t=()
+  for _ in 1 2 3; do
+    local t0
+    t0=$(date +%s.%N)
+    icp-slam "$work/icp-slam.ini" "$radish/aces.rawlog" < /dev/null > "$work/icp-slam.log" 2>&1
+    t+=("$(python3 -c "import sys; print('%.1f' % (float(sys.argv[1]) - float(sys.argv[2])))" \
+      "$(date +%s.%N)" "$t0")")
+  done
+  local secs
+  secs=$(printf '%s\n' "${t[@]}" | sort -n | sed -n 2p)
+  awk 'NR % 2 == 0 {print NR / 2, $2, $3, 0, $4, 0, 0}' "$work/icp-slam/log_estimated_path.txt" \
+    > "$work/icp-slam-poses.txt"
+  scored "MRPT icp-slam, icp-slam_demo_LM.ini, the file's aperture" "$work/icp-slam-poses.txt" "$secs"
 }
 
 file=$(row "ICP only, the file's aperture (90 deg)" "$work/off-file-aperture.ini")
 off=$(row "ICP only" "$work/off.ini")
 on=$(row "ICP + loop closure" "$work/on.ini")
+mrpt=$(icp_slam_row)
 grid_row() {  # grid_row LOG: runs it, keeps its grid picture, prints a line
   local out="$work/grid-$1"
   "$bin/planar-mapper" --config "$work/grid.ini" --rawlog "$radish/$1.rawlog" --poses-only \
@@ -83,6 +123,7 @@ is off by default: poses.md, "Loop closure".
 $file
 $off
 $on
+$mrpt
 
 Published on this log (translation): Cartographer about 0.04 ± 0.04 m,
 graph SLAM in Kümmerle et al. about 0.04 m. The first row is the pose stage

@@ -102,6 +102,23 @@ json repairSummary(const std::vector<OnlineRepair>& repairs) {
           {"ms", percentiles(ms)}};
 }
 
+// Each accepted loop closure: its keyframes' times, the match (the newer
+// keyframe in the older one's frame), its score and what its solve did.
+json closuresSummary(const std::vector<poses::LoopClosure>& closures) {
+  json out = json::array();
+  for (const poses::LoopClosure& c : closures) {
+    out.push_back({{"older_t", c.older_t},
+                   {"newer_t", c.t},
+                   {"x_m", c.measurement.x},
+                   {"y_m", c.measurement.y},
+                   {"theta_deg", c.measurement.theta * 180.0 / M_PI},
+                   {"score", c.score},
+                   {"moved_m", c.moved_m},
+                   {"solve_ms", c.solve_ms}});
+  }
+  return out;
+}
+
 // Online-mode keys: per-scan EM and pose timings (doc/outputs.md).
 void addOnline(const std::vector<OnlineRecord>& online, json& s) {
   std::vector<double> em_ms;
@@ -254,6 +271,7 @@ json summaryJson(const MapperArgs& args, const MappingResult& r, const StageCloc
                                   {"solve_s", l.solve_s},
                                   {"trajectory_rewrites", poses.corrections},
                                   {"structure_scans_moved", points.scans_moved}};
+    s["poses"]["loop_closure"]["closures"] = closuresSummary(poses.closures);
     if (r.planar && !r.planar->repairs.empty()) {
       s["poses"]["loop_closure"]["online_repairs"] = repairSummary(r.planar->repairs);
     }

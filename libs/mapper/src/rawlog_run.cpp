@@ -228,6 +228,7 @@ class RawlogRun {
     result_.poses.motion = stage.gate().stats();
     if (const poses::LoopClosingBackEnd* loops = stage.loops()) {
       result_.poses.loops = loops->stats();
+      result_.poses.closures = loops->closures();
       result_.poses.corrections = stage.corrections();
       result_.poses.graph = loops->graph();
     }

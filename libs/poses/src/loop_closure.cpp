@@ -333,8 +333,8 @@ bool LoopClosingBackEnd::acceptAfterSolve(const PoseEdge& edge, const ScanMatch&
     return false;
   }
   const std::size_t k = newest();
-  closures_.push_back({edge.from, k, keyframes_[k].t, match.score,
-                       distance(before[k], graph_.node(k)), 1000.0 * solve_s});
+  closures_.push_back({edge.from, k, keyframes_[edge.from].t, keyframes_[k].t, match.pose,
+                       match.score, distance(before[k], graph_.node(k)), 1000.0 * solve_s});
   ++stats_.accepted;
   path_at_last_closure_ = path_m_;
   return true;

@@ -73,6 +73,7 @@ struct PoseResult {
   poses::PoseStats stats;
   poses::MotionGateStats motion;                 ///< odometry / given poses dropped as implausible
   std::optional<poses::LoopClosureStats> loops;  ///< with [Poses] loop_closure = true
+  std::vector<poses::LoopClosure> closures;      ///< the accepted loop closures, in order
   std::size_t corrections = 0;                   ///< loop closures that rewrote the past trajectory
   std::optional<poses::PoseGraph> graph;         ///< the optimised pose graph (loop closure)
   /// The pose laser's grid and simple map from the final poses ([Output]

@@ -87,7 +87,9 @@ struct Keyframe {
 struct LoopClosure {
   std::size_t older = 0;  ///< keyframe indices
   std::size_t newer = 0;
-  double t = 0;  ///< time of the newer keyframe (s)
+  double older_t = 0;  ///< time of the older keyframe (s)
+  double t = 0;        ///< time of the newer keyframe (s)
+  Pose2 measurement;   ///< the newer keyframe's pose in the older one's frame (the match)
   double score = 0;
   double moved_m = 0;   ///< how far the newest keyframe moved when the graph was solved
   double solve_ms = 0;  ///< that solve's wall time
