@@ -16,7 +16,6 @@ trap 'rm -rf "$work"' EXIT
 mkdir -p doc/images
 
 "$bin/indoor-sim" --world config/worlds/default-return.json --no-cameras --quiet --out "$work/ret"
-printf '@include %s\n[Poses]\nloop_closure = true\n' "$PWD/config/default.ini" > "$work/loops.ini"
 
 cat > "$work/inner.sh" <<INNER
 #!/usr/bin/env bash
@@ -30,7 +29,7 @@ while [ ! -f "$work/out/summary.json" ]; do sleep 0.5; done
 sleep 3
 grab doc/images/gui-final.png
 wait \$pid
-"$bin/planar-mapper" --config "$work/loops.ini" --rawlog "$work/ret.rawlog" --out "$work/loops" \
+"$bin/planar-mapper" --config "$PWD/config/default.ini" --rawlog "$work/ret.rawlog" --out "$work/loops" \
   --gui --gui-hold 8 -q &
 pid=\$!
 while [ ! -f "$work/loops/summary.json" ]; do sleep 0.5; done

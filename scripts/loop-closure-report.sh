@@ -115,8 +115,8 @@ planar-mapper on the Radish ACES log (7,374 scans, 1,365 s, several loops;
 relation error against the benchmark's 1,279 reference relations (mean ±
 std; "short": relations under 20 scans apart, "loop": the 116 longer ones,
 which close loops). Time: median wall time of 3 runs on a shared 2-core
-machine; "x real time" = 1,365 s / that. How loop closure works, and why it
-is off by default: poses.md, "Loop closure".
+machine; "x real time" = 1,365 s / that. How loop closure works: poses.md,
+"Loop closure".
 
 | run | all: translation (m) | all: rotation (deg) | short: translation (m) | loop: translation (m) | loop: rotation (deg) | time (s) | x real time |
 |---|---|---|---|---|---|---|---|

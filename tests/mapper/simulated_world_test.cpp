@@ -18,6 +18,7 @@
 #include "pmap/poses/pose_graph.h"
 #include "pmap/poses/poses_file.h"
 #include "rawlog_fixtures.h"
+#include "test_files.h"
 
 namespace pmap::mapper {
 namespace {
@@ -141,21 +142,14 @@ std::vector<std::vector<std::string>> csvRows(const fs::path& p) {
   return rows;
 }
 
-// Issue 15 items 4 and 6: driven there and back with loop closure on, the
-// closures rewrite the past trajectory; every structure scan of the map ends
-// at the final trajectory's pose of its time (the online map was repaired,
-// not left at the poses it was first placed with), and poses.graph holds the
-// graph MRPT reads.
+// Issue 15 items 4 and 6: driven there and back with loop closure on (as
+// config/default.ini has it), the closures rewrite the past trajectory; every structure scan of the
+// map ends at the final trajectory's pose of its time (the online map was repaired, not left at the
+// poses it was first placed with), and poses.graph holds the graph MRPT reads.
 TEST(DefaultReturnWorld, Item15_WithLoopClosureTheMapFollowsTheFinalPoses) {
   const fs::path out = testing::freshTestDir("world_return_loops");
-  const fs::path ini = out.parent_path() / "world_return_loops.ini";
-  {
-    std::ofstream f(ini);
-    f << "@include " << (fs::path(PMAP_SOURCE_DIR) / "config/default.ini").string() << "\n";
-    f << "[Poses]\nloop_closure = true\n";
-  }
-  ASSERT_EQ(run({"--config", ini.string(), "--rawlog", (kSim / "default-return.rawlog").string(),
-                 "--out", out.string(), "--no-textures", "-q"}),
+  ASSERT_EQ(run({"--rawlog", (kSim / "default-return.rawlog").string(), "--out", out.string(),
+                 "--no-textures", "-q"}),
             0);
   std::ifstream summary_file(out / "summary.json");
   const nlohmann::json summary = nlohmann::json::parse(summary_file);
@@ -187,9 +181,10 @@ TEST(DefaultReturnWorld, Item15_WithLoopClosureTheMapFollowsTheFinalPoses) {
   EXPECT_EQ(graph.edges.size(), graph.nodes.size() - 1 + loops["accepted"].get<std::size_t>());
 }
 
-// planar-mapper --poses-only on a simulated world with config/default.ini,
-// loop closure on or off; its pose errors against the world's true poses and
-// summary.json's loop_closure block (null when off).
+// planar-mapper --poses-only on a simulated world with config/default.ini
+// (loop closure on) or default.ini with loop closure off; its pose errors
+// against the world's true poses and summary.json's loop_closure block (null
+// when off).
 struct LoopRun {
   eval::PoseErrors errors;
   nlohmann::json loops;
@@ -198,12 +193,10 @@ struct LoopRun {
 LoopRun runLoopClosure(const std::string& world, bool closing) {
   const std::string name = "world_" + world + (closing ? "_on" : "_off");
   const fs::path out = testing::freshTestDir(name);
-  const fs::path ini = out.parent_path() / (name + ".ini");
-  {
-    std::ofstream f(ini);
-    f << "@include " << (fs::path(PMAP_SOURCE_DIR) / "config/default.ini").string() << "\n";
-    f << "[Poses]\nloop_closure = " << (closing ? "true" : "false") << "\n";
-  }
+  const fs::path ini =
+      closing ? fs::path(PMAP_SOURCE_DIR) / "config/default.ini"
+              : testing::editedDefaultIni(testing::freshTestDir(name + "_ini"),
+                                          "loop_closure = true", "loop_closure = false");
   LoopRun r;
   EXPECT_EQ(run({"--config", ini.string(), "--rawlog", (kSim / (world + ".rawlog")).string(),
                  "--out", out.string(), "--poses-only", "-q"}),

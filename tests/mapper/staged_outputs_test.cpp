@@ -165,10 +165,10 @@ TEST(StagedOutputs, Item14_RerunLeavesExactlyTheManifestsFiles) {
   r = mapper({"--rawlog", log.string(), "--out", out.string(), "-q", "--poses-only"});
   ASSERT_EQ(r.code, 0) << r.err;
   expectOneCompleteSet(out, {"notes.txt", "report/mine.txt"});
-  EXPECT_EQ(filesIn(out),  // the pose laser's maps too (issue 15 item 6)
+  EXPECT_EQ(filesIn(out),  // the pose laser's maps and the pose graph too (issue 15 item 6)
             (std::set<std::string>{"effective.ini", "grid.gridmap.gz", "grid.png", "manifest.json",
-                                   "map.simplemap", "notes.txt", "poses.tum", "poses.txt",
-                                   "report/mine.txt", "summary.json"}));
+                                   "map.simplemap", "notes.txt", "poses.graph", "poses.tum",
+                                   "poses.txt", "report/mine.txt", "summary.json"}));
 }
 
 // `--out .` beside the rawlog (or any folder holding files the layout does

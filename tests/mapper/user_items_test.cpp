@@ -13,6 +13,7 @@
 #include "pmap/mapper/planar_mapper_app.h"
 #include "process_runner.h"
 #include "rawlog_fixtures.h"
+#include "test_files.h"
 
 namespace pmap::mapper {
 namespace {
@@ -47,19 +48,6 @@ fs::path fixture(const fs::path& dir, int cycles = 12) {
   return dir / "log.rawlog";
 }
 
-// default.ini with `from` replaced by `to`, written into `dir` (its
-// @include icp.ini resolved by copying icp.ini beside it).
-fs::path editedIni(const fs::path& dir, const std::string& from, const std::string& to) {
-  std::ifstream in(kDefaultIni);
-  std::string text((std::istreambuf_iterator<char>(in)), {});
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  text.replace(at, from.size(), to);
-  std::ofstream(dir / "my.ini") << text;
-  fs::copy_file(kSource / "config/icp.ini", dir / "icp.ini", fs::copy_options::overwrite_existing);
-  return dir / "my.ini";
-}
-
 json readJson(const fs::path& p) {
   std::ifstream in(p);
   return json::parse(in);
@@ -77,7 +65,8 @@ TEST(UserItems, Item2_WrongPoseLaserLabelIsAnErrorListingTheLabels) {
   const fs::path dir = testing::freshTestDir("item2_label");
   const fs::path log = fixture(dir);
   const Outcome r = mapper(
-      {"--config", editedIni(dir, "pose_laser = LASER_H", "pose_laser = LASER_HORIZ").string(),
+      {"--config",
+       testing::editedDefaultIni(dir, "pose_laser = LASER_H", "pose_laser = LASER_HORIZ").string(),
        "--rawlog", log.string(), "--out", (dir / "out").string(), "-q"});
   EXPECT_EQ(r.code, 1) << r.err;
   EXPECT_NE(r.err.find("[Sensors] pose_laser = LASER_HORIZ"), std::string::npos) << r.err;
@@ -89,9 +78,11 @@ TEST(UserItems, Item2_WrongPoseLaserLabelIsAnErrorListingTheLabels) {
 TEST(UserItems, Item2_AbsentMemberOfARoleWarns) {
   const fs::path dir = testing::freshTestDir("item2_member");
   const fs::path log = fixture(dir);
-  const Outcome r = mapper(
-      {"--config", editedIni(dir, "structure  = LASER_V", "structure = LASER_V, OPENNI2").string(),
-       "--rawlog", log.string(), "--out", (dir / "out").string(), "-q", "--no-textures"});
+  const Outcome r =
+      mapper({"--config",
+              testing::editedDefaultIni(dir, "structure  = LASER_V", "structure = LASER_V, OPENNI2")
+                  .string(),
+              "--rawlog", log.string(), "--out", (dir / "out").string(), "-q", "--no-textures"});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(countOf(r.err, "warning: [Sensors] structure: no observation labelled 'OPENNI2'"), 1)
       << r.err;
@@ -260,7 +251,7 @@ TEST(UserItems, Item7_IcpSlamIniIsReusable) {
 
 TEST(UserItems, Item7_AllConfigErrorsOfAFileInOneRun) {
   const fs::path dir = testing::freshTestDir("item7_errors");
-  const fs::path ini = editedIni(dir, "kappa = 200", "kappa = abc\nsigam_m = 0.02");
+  const fs::path ini = testing::editedDefaultIni(dir, "kappa = 200", "kappa = abc\nsigam_m = 0.02");
   std::ifstream in(ini);
   std::string text((std::istreambuf_iterator<char>(in)), {});
   in.close();

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 
 namespace pmap::poses {
 namespace {
@@ -94,6 +95,7 @@ struct Drive {
   double front_error_m = 0;
   double corrected_error_m = 0;
   LoopClosureStats stats;
+  Pose2 corrected;  ///< the last pose, corrected
 };
 
 // Drives `path`; the front end integrates each true step with a heading
@@ -112,10 +114,11 @@ Drive drive(const std::vector<Segment>& world, const std::vector<Pose2>& path,
     }
     back_end.addScan(t += 0.1, front, scan(world, path[i], rng));
   }
+  back_end.finish();
   const Pose2 corrected = back_end.corrected(back_end.newest(), front);
   const Pose2& truth = path.back();
   return {std::hypot(front.x - truth.x, front.y - truth.y),
-          std::hypot(corrected.x - truth.x, corrected.y - truth.y), back_end.stats()};
+          std::hypot(corrected.x - truth.x, corrected.y - truth.y), back_end.stats(), corrected};
 }
 
 LoopClosureOptions enabled() {
@@ -131,6 +134,39 @@ TEST(LoopClosure, ClosesTheRingAndRemovesTheDrift) {
   EXPECT_GT(r.front_error_m, 1.0);
   EXPECT_GE(r.stats.accepted, 1u);
   EXPECT_LT(r.corrected_error_m, 0.25) << "front end " << r.front_error_m << " m";
+}
+
+// loop_search_latency_keyframes: the searches run on a worker thread and
+// are applied a fixed number of keyframes later. The ring still closes, and
+// the result does not depend on how fast the worker was: two runs agree to
+// the last bit.
+TEST(LoopClosure, AWorkerThreadClosesTheRingTheSameWayEveryTime) {
+  const auto world = ringWorld();
+  const auto path = ringPath(2);
+  LoopClosureOptions o = enabled();
+  o.search_latency_keyframes = 2;
+  const Drive a = drive(world, path, 0.05, o);
+  const Drive b = drive(world, path, 0.05, o);
+  EXPECT_GE(a.stats.accepted, 1u);
+  EXPECT_LT(a.corrected_error_m, 0.25) << "front end " << a.front_error_m << " m";
+  EXPECT_EQ(a.stats.accepted, b.stats.accepted);
+  EXPECT_EQ(a.stats.candidates, b.stats.candidates);
+  EXPECT_EQ(a.corrected.x, b.corrected.x);
+  EXPECT_EQ(a.corrected.y, b.corrected.y);
+  EXPECT_EQ(a.corrected.theta, b.corrected.theta);
+}
+
+TEST(LoopClosureOptions, SearchLatencyIsBounded) {
+  std::string why;
+  LoopClosureOptions o;
+  EXPECT_TRUE(o.validate(&why)) << why;
+  o.search_latency_keyframes = 100;
+  EXPECT_TRUE(o.validate(&why)) << why;
+  o.search_latency_keyframes = 101;
+  EXPECT_FALSE(o.validate(&why));
+  EXPECT_NE(why.find("loop_search_latency_keyframes"), std::string::npos) << why;
+  o.search_latency_keyframes = -1;
+  EXPECT_FALSE(o.validate(&why));
 }
 
 TEST(LoopClosure, DisabledChangesNothing) {

@@ -4,6 +4,7 @@
 
 #include <fstream>
 #include <iterator>
+#include <stdexcept>
 
 namespace pmap::testing {
 namespace fs = std::filesystem;
@@ -34,6 +35,19 @@ std::map<std::string, std::string> snapshot(const fs::path& dir) {
         e.is_directory() ? "<dir>" : readText(e.path());
   }
   return out;
+}
+
+fs::path editedDefaultIni(const fs::path& dir, const std::string& from, const std::string& to) {
+  const fs::path config = fs::path(PMAP_SOURCE_DIR) / "config";
+  std::string text = readText(config / "default.ini");
+  const auto at = text.find(from);
+  if (at == std::string::npos) {
+    throw std::runtime_error("config/default.ini holds no '" + from + "'");
+  }
+  text.replace(at, from.size(), to);
+  writeText(dir / "my.ini", text);
+  fs::copy_file(config / "icp.ini", dir / "icp.ini", fs::copy_options::overwrite_existing);
+  return dir / "my.ini";
 }
 
 }  // namespace pmap::testing

@@ -100,6 +100,7 @@ void PosesSection::load(config::SectionReader& r) {
   r.read("odometry_sigma_fraction", l.odometry_sigma_fraction);
   r.read("odometry_sigma_deg", l.odometry_sigma_deg);
   r.read("loop_loss_scale", l.loop_loss_scale);
+  r.read("loop_search_latency_keyframes", l.search_latency_keyframes);
 }
 
 void OutputOptions::load(config::SectionReader& reader) {

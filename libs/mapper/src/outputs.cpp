@@ -269,6 +269,7 @@ json summaryJson(const MapperArgs& args, const MappingResult& r, const StageCloc
                                   {"accepted", l.accepted},
                                   {"search_s", l.search_s},
                                   {"solve_s", l.solve_s},
+                                  {"wait_s", l.wait_s},
                                   {"trajectory_rewrites", poses.corrections},
                                   {"structure_scans_moved", points.scans_moved}};
     s["poses"]["loop_closure"]["closures"] = closuresSummary(poses.closures);

@@ -208,6 +208,10 @@ class RawlogRun {
   }
 
   void finish(poses::PoseStage& stage, const input::ObservationSource& source) {
+    {
+      auto in_poses = clock_.enter(Stage::kPoses);
+      stage.finish();  // a loop search still on its worker
+    }
     result_.input.stats = source.stats();
     result_.poses.stats = stage.stats();
     const auto& in = result_.input.stats;

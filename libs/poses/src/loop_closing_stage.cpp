@@ -89,6 +89,13 @@ void LoopClosingStage::onScan(double t, const mrpt::obs::CObservation2DRangeScan
   }
 }
 
+void LoopClosingStage::finish() {
+  sync();
+  if (back_end_.finish()) {
+    recomputeAll();
+  }
+}
+
 void LoopClosingStage::recomputeAll() {
   ++corrections_;
   corrected_ = Trajectory();

@@ -1,6 +1,6 @@
 #include "pmap/poses/loop_closure.h"
 
-#include "pmap/poses/free_space.h"
+#include <mrpt/core/bits_math.h>
 
 #include <algorithm>
 #include <chrono>
@@ -12,10 +12,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-double degToRad(double d) {
-  return d * M_PI / 180.0;
 }
 
 double distance(const Pose2& a, const Pose2& b) {
@@ -72,6 +68,10 @@ bool LoopClosureOptions::validate(std::string* why) const {
     *why = "loop_candidates_per_keyframe must be in [1, 100]";
     return false;
   }
+  if (search_latency_keyframes < 0 || search_latency_keyframes > 100) {
+    *why = "loop_search_latency_keyframes must be in [0, 100]";
+    return false;
+  }
   return true;
 }
 
@@ -84,7 +84,8 @@ bool LoopClosingBackEnd::isKeyframe(const Pose2& front) const {
   }
   const Pose2& last = keyframes_.back().front;
   return distance(last, front) >= options_.keyframe_distance_m ||
-         std::abs(wrapAngle(front.theta - last.theta)) >= degToRad(options_.keyframe_angle_deg);
+         std::abs(wrapAngle(front.theta - last.theta)) >=
+             mrpt::DEG2RAD(options_.keyframe_angle_deg);
 }
 
 bool LoopClosingBackEnd::addScan(double t, const Pose2& front,
@@ -130,7 +131,7 @@ void LoopClosingBackEnd::addKeyframe(double t, const Pose2& front,
 Eigen::Matrix3d LoopClosingBackEnd::odometryInformation(std::size_t from, std::size_t to) const {
   const Pose2 z = between(keyframes_[from].front, keyframes_[to].front);
   const double sigma_t = std::max(0.01, options_.odometry_sigma_fraction * std::hypot(z.x, z.y));
-  const double sigma_r = degToRad(options_.odometry_sigma_deg) + 0.05 * std::abs(z.theta);
+  const double sigma_r = mrpt::DEG2RAD(options_.odometry_sigma_deg) + 0.05 * std::abs(z.theta);
   return Eigen::Vector3d(1.0 / (sigma_t * sigma_t), 1.0 / (sigma_t * sigma_t),
                          1.0 / (sigma_r * sigma_r))
       .asDiagonal();
@@ -186,131 +187,72 @@ std::vector<Rays> LoopClosingBackEnd::scansAround(std::size_t centre, double hal
   return out;
 }
 
-// A match is refused when either side's points land where the other side's
-// beams passed freely (free_space.h).
-bool LoopClosingBackEnd::freeSpaceAgrees(const std::vector<Rays>& submap,
-                                         const std::vector<Rays>& query, const Pose2& match) const {
-  const double cell = 2.0 * match_options_.resolution_m;
-  const double margin = options_.free_space_margin_m, gap = match_options_.max_gap_m;
-  const FreeSpace submap_space(submap, cell, margin, gap);
-  const FreeSpace query_space(query, cell, margin, gap);
-  const std::vector<Rays> query_there = moved(query, match);
-  const std::vector<Rays> submap_here = moved(submap, inverse(match));
-  const double conflict = std::max(submap_space.conflict(allEnds(query_there)),
-                                   query_space.conflict(allEnds(submap_here)));
-  const double same_side =
-      std::min(submap_space.sameSide(query_there), query_space.sameSide(submap_here));
-  // Relative to how consistent each side is with itself: real scans, with
-  // clutter and 1-degree beams, agree with themselves less than simulated ones.
-  const double own = std::min(submap_space.sameSide(submap), query_space.sameSide(query));
-  return conflict <= options_.max_free_space_conflict &&
-         same_side >= options_.min_same_side_ratio * own;
-}
-
-// Coarse to fine (Olson 2009): the whole window on a coarse, blurred grid
-// (4x the cell and sigma, 80 % of the score), then a small window around its
-// best pose on the fine grid.
-LoopClosingBackEnd::Verdict LoopClosingBackEnd::tryCandidate(std::size_t older,
-                                                             const std::vector<Rays>& query_scans,
-                                                             double radius, double angle_deg,
-                                                             PoseEdge& edge,
-                                                             ScanMatch& match) const {
-  const std::size_t k = newest();
-  const std::vector<Rays> submap_scans =
-      scansAround(older, 0.5 * options_.submap_path_m, true, false);
-  const std::vector<Eigen::Vector2d> submap = allEnds(submap_scans);
-  const std::vector<Eigen::Vector2d> query = allEnds(query_scans);
-  ScanMatchOptions coarse = match_options_;
-  coarse.resolution_m = 4.0 * match_options_.resolution_m;
-  coarse.sigma_m = 4.0 * match_options_.sigma_m;
-  coarse.max_angle_step_deg = 1.0;
-  coarse.min_angle_step_deg = 0.5;
-  coarse.max_query_points = 150;
-  MatchWindow window;
-  window.guess = between(graph_.node(older), graph_.node(k));
-  window.linear_m = radius;
-  window.angular_deg = angle_deg;
-  const MatchWindow search = window;
-  const ScanMatch rough =
-      ScanMatcher(submap, coarse).match(query, window, 0.8 * options_.min_score);
-  if (!rough.found) {
-    return Verdict::kNoMatch;
-  }
-  window.guess = rough.pose;
-  window.linear_m = 2.0 * coarse.resolution_m;
-  window.angular_deg = 2.0;
-  const ScanMatcher fine(submap, match_options_);
-  match = fine.match(query, window, options_.min_score);
-  if (!match.found) {
-    return Verdict::kNoMatch;
-  }
-  // A best pose on the window's edge is no verified maximum: the score may
-  // rise beyond it (the search was cut off there).
-  const double edge_m = search.linear_m - 2.0 * match_options_.resolution_m;
-  if (std::abs(match.pose.x - search.guess.x) >= edge_m ||
-      std::abs(match.pose.y - search.guess.y) >= edge_m ||
-      std::abs(wrapAngle(match.pose.theta - search.guess.theta)) >=
-          degToRad(search.angular_deg - 1.0)) {
-    return Verdict::kAmbiguous;
-  }
-  // A place that looks the same elsewhere in the search window (a corridor's
-  // axis, a row of doors) gives no loop: the runner-up, at least
-  // ambiguity_distance_m or 5 deg from the best, must score clearly less.
-  MatchWindow near_best;
-  near_best.guess = match.pose;
-  near_best.linear_m = options_.ambiguity_distance_m;
-  near_best.angular_deg = 5.0;
-  const ScanMatch runner_up =
-      fine.matchOutside(query, search, near_best, options_.max_ambiguity * match.score);
-  if (runner_up.found) {
-    return Verdict::kAmbiguous;
-  }
-  if (!freeSpaceAgrees(submap_scans, query_scans, match.pose)) {
-    return Verdict::kFreeSpaceConflict;
-  }
-  edge.from = older;
-  edge.to = k;
-  edge.measurement = match.pose;
-  const double st = options_.loop_sigma_m, sr = degToRad(options_.loop_sigma_deg);
-  edge.information = Eigen::Vector3d(1 / (st * st), 1 / (st * st), 1 / (sr * sr)).asDiagonal();
-  edge.loop = true;
-  return Verdict::kMatched;
-}
-
-bool LoopClosingBackEnd::closeLoop() {
-  const auto t0 = Clock::now();
+// The search window, the candidates with their submaps and the query, as
+// the graph is now.
+LoopSearch LoopClosingBackEnd::prepareSearch() const {
+  LoopSearch s;
+  s.newest = newest();
   const double since = path_m_ - path_at_last_closure_;
-  const double radius = std::min(options_.max_search_radius_m,
-                                 options_.search_radius_m + options_.search_growth * since);
-  const double angle =
+  s.radius_m = std::min(options_.max_search_radius_m,
+                        options_.search_radius_m + options_.search_growth * since);
+  s.angle_deg =
       std::min(options_.max_search_angle_deg,
                options_.search_angle_deg + options_.search_angle_growth_deg_per_m * since);
-  PoseEdge best_edge;
-  ScanMatch best;
-  const std::vector<std::size_t> older = candidates(radius);
+  for (const std::size_t j : candidates(s.radius_m)) {
+    s.candidates.push_back({j, between(graph_.node(j), graph_.node(s.newest)),
+                            scansAround(j, 0.5 * options_.submap_path_m, true, false)});
+  }
   // The query (the newest keyframe's recent scans) is the same for every
   // candidate.
-  const std::vector<Rays> query = older.empty()
-                                      ? std::vector<Rays>{}
-                                      : scansAround(newest(), options_.query_path_m, false, true);
-  for (const std::size_t j : older) {
-    ++stats_.candidates;
-    PoseEdge edge;
-    ScanMatch match;
-    const Verdict v = tryCandidate(j, query, radius, angle, edge, match);
-    if (v != Verdict::kMatched) {
-      ++(v == Verdict::kNoMatch     ? stats_.rejected_match
-         : v == Verdict::kAmbiguous ? stats_.rejected_ambiguous
-                                    : stats_.rejected_free_space);
-      continue;
-    }
-    if (match.score > best.score) {
-      best = match;
-      best_edge = edge;
-    }
+  if (!s.candidates.empty()) {
+    s.query = scansAround(s.newest, options_.query_path_m, false, true);
   }
-  stats_.search_s += secondsSince(t0);
-  return best.found && best.score > 0 && acceptAfterSolve(best_edge, best);
+  return s;
+}
+
+bool LoopClosingBackEnd::apply(const LoopSearchResult& r) {
+  stats_.candidates += r.candidates;
+  stats_.rejected_match += r.rejected_match;
+  stats_.rejected_ambiguous += r.rejected_ambiguous;
+  stats_.rejected_free_space += r.rejected_free_space;
+  stats_.search_s += r.search_s;
+  return r.found && acceptAfterSolve(r.edge, r.match);
+}
+
+// Synchronous: search and apply now. With workers: start this keyframe's
+// search on its own thread, and apply, in order, the searches whose
+// keyframes are search_latency_keyframes old (waiting for them if need be).
+// Either way the result depends only on the input, not on the workers' speed.
+bool LoopClosingBackEnd::closeLoop() {
+  const auto latency = static_cast<std::size_t>(options_.search_latency_keyframes);
+  if (latency == 0) {
+    return apply(runLoopSearch(prepareSearch(), options_, match_options_));
+  }
+  pending_.push_back(
+      std::async(std::launch::async, runLoopSearch, prepareSearch(), options_, match_options_));
+  return pending_.size() > latency && applyOldest();
+}
+
+bool LoopClosingBackEnd::applyOldest() {
+  const auto t0 = Clock::now();
+  const LoopSearchResult r = pending_.front().get();
+  pending_.pop_front();
+  stats_.wait_s += secondsSince(t0);
+  return apply(r);
+}
+
+bool LoopClosingBackEnd::finish() {
+  bool moved = false;
+  while (!pending_.empty()) {
+    moved = applyOldest() || moved;
+  }
+  return moved;
+}
+
+LoopClosingBackEnd::~LoopClosingBackEnd() {
+  for (auto& f : pending_) {
+    f.wait();
+  }
 }
 
 // Solves the graph with the loop; keeps it only if the graph agrees with it.
@@ -332,7 +274,7 @@ bool LoopClosingBackEnd::acceptAfterSolve(const PoseEdge& edge, const ScanMatch&
     ++stats_.rejected_chi2;
     return false;
   }
-  const std::size_t k = newest();
+  const std::size_t k = edge.to;
   closures_.push_back({edge.from, k, keyframes_[edge.from].t, keyframes_[k].t, match.pose,
                        match.score, distance(before[k], graph_.node(k)), 1000.0 * solve_s});
   ++stats_.accepted;

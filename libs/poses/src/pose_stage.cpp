@@ -168,6 +168,12 @@ void PoseStage::processFrame(const input::InputStep& step) {
   }
 }
 
+void PoseStage::finish() {
+  if (slam_) {
+    slam_->finish();
+  }
+}
+
 void PoseStage::process(const input::InputStep& step, const std::string& file) {
   if (!tracker_) {
     return;

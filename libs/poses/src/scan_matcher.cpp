@@ -112,18 +112,32 @@ void ScanMatcher::buildGrid(const std::vector<Eigen::Vector2d>& reference) {
                       std::vector<float>(static_cast<std::size_t>(grid_.cols) * grid_.rows, 0.0f));
   const int r = static_cast<int>(std::ceil(reach / res));
   const double inv2s2 = 1.0 / (2.0 * options_.sigma_m * options_.sigma_m);
+  // exp(-|c - p|^2 / 2 s^2) = exp(-dx^2 / 2 s^2) exp(-dy^2 / 2 s^2): 2 (2r + 1)
+  // exponentials per point instead of (2r + 1)^2.
+  std::vector<double> gx(static_cast<std::size_t>(2 * r + 1)), gy(gx.size());
   for (const auto& p : reference) {
     const int pc = static_cast<int>(std::floor((p.x() - grid_.x0) / res));
     const int pr = static_cast<int>(std::floor((p.y() - grid_.y0) / res));
+    for (int d = -r; d <= r; ++d) {
+      const double dx = grid_.x0 + (pc + d + 0.5) * res - p.x();
+      const double dy = grid_.y0 + (pr + d + 0.5) * res - p.y();
+      gx[static_cast<std::size_t>(d + r)] = std::exp(-dx * dx * inv2s2);
+      gy[static_cast<std::size_t>(d + r)] = std::exp(-dy * dy * inv2s2);
+    }
     for (int dr = -r; dr <= r; ++dr) {
+      const int rr = pr + dr;
+      if (rr < 0 || rr >= grid_.rows) {
+        continue;
+      }
+      float* row = &grid_.levels[0][static_cast<std::size_t>(rr) * grid_.cols];
       for (int dc = -r; dc <= r; ++dc) {
-        const int c = pc + dc, rr = pr + dr;
-        if (c < 0 || rr < 0 || c >= grid_.cols || rr >= grid_.rows) {
+        const int c = pc + dc;
+        if (c < 0 || c >= grid_.cols) {
           continue;
         }
-        const Eigen::Vector2d centre(grid_.x0 + (c + 0.5) * res, grid_.y0 + (rr + 0.5) * res);
-        float& cell = grid_.levels[0][static_cast<std::size_t>(rr) * grid_.cols + c];
-        cell = std::max(cell, static_cast<float>(std::exp(-(centre - p).squaredNorm() * inv2s2)));
+        const auto v = static_cast<float>(gx[static_cast<std::size_t>(dc + r)] *
+                                          gy[static_cast<std::size_t>(dr + r)]);
+        row[c] = std::max(row[c], v);
       }
     }
   }
@@ -149,12 +163,15 @@ struct ScanMatcher::Search {
   double best = 0;
   Block best_block;
   bool found = false;
+  bool first_only = false;  ///< stop at the first pose scoring more than best (anyOutside)
   /// Level-0 blocks inside this box (angle and cell offsets, inclusive) do
   /// not count (matchOutside); empty when lo > hi.
   int ex_a0 = 1, ex_a1 = 0, ex_x0 = 0, ex_x1 = -1, ex_y0 = 0, ex_y1 = -1;
+  /// The whole block is excluded: none of its offsets counts, at any level.
   bool excluded(const Block& b) const {
-    return b.angle >= ex_a0 && b.angle <= ex_a1 && b.x >= ex_x0 && b.x <= ex_x1 && b.y >= ex_y0 &&
-           b.y <= ex_y1;
+    const int last = (1 << b.level) - 1;
+    return b.angle >= ex_a0 && b.angle <= ex_a1 && b.x >= ex_x0 && b.x + last <= ex_x1 &&
+           b.y >= ex_y0 && b.y + last <= ex_y1;
   }
 
   double bound(const Block& b) const {
@@ -168,13 +185,13 @@ struct ScanMatcher::Search {
   void descend(std::vector<Block> blocks) {
     std::sort(blocks.begin(), blocks.end(), std::greater<Block>());
     for (const Block& b : blocks) {
-      if (b.bound <= best) {
+      if (b.bound <= best || (first_only && found)) {
         return;  // sorted: no later block can do better
       }
+      if (excluded(b)) {
+        continue;
+      }
       if (b.level == 0) {
-        if (excluded(b)) {
-          continue;
-        }
         best = b.bound;  // at level 0 the bound is the score
         best_block = b;
         found = true;
@@ -203,9 +220,20 @@ ScanMatch ScanMatcher::match(const std::vector<Eigen::Vector2d>& query_in,
   return matchOutside(query_in, window, none, min_score);
 }
 
-ScanMatch ScanMatcher::matchOutside(const std::vector<Eigen::Vector2d>& query_in,
+ScanMatch ScanMatcher::matchOutside(const std::vector<Eigen::Vector2d>& query,
                                     const MatchWindow& window, const MatchWindow& excluded,
                                     double min_score) const {
+  return search(query, window, excluded, min_score, false);
+}
+
+bool ScanMatcher::anyOutside(const std::vector<Eigen::Vector2d>& query, const MatchWindow& window,
+                             const MatchWindow& excluded, double min_score) const {
+  return search(query, window, excluded, min_score, true).found;
+}
+
+ScanMatch ScanMatcher::search(const std::vector<Eigen::Vector2d>& query_in,
+                              const MatchWindow& window, const MatchWindow& excluded,
+                              double min_score, bool first_only) const {
   const std::vector<Eigen::Vector2d> query =
       thinned(query_in, options_.query_voxel_m, options_.max_query_points);
   if (query.empty() || grid_.levels.empty()) {
@@ -220,8 +248,9 @@ ScanMatch ScanMatcher::matchOutside(const std::vector<Eigen::Vector2d>& query_in
   const double step = std::clamp(res / max_range, options_.min_angle_step_deg * M_PI / 180.0,
                                  options_.max_angle_step_deg * M_PI / 180.0);
   const int n_angles = static_cast<int>(std::ceil(window.angular_deg * M_PI / 180.0 / step));
-  Search search{grid_,     {}, static_cast<int>(std::ceil(2.0 * window.linear_m / res)) + 1,
-                min_score, {}, false};
+  Search bnb{grid_,     {}, static_cast<int>(std::ceil(2.0 * window.linear_m / res)) + 1,
+             min_score, {}, false,
+             first_only};
   const Eigen::Vector2d corner(window.guess.x - window.linear_m - grid_.x0,
                                window.guess.y - window.linear_m - grid_.y0);
   if (excluded.linear_m >= 0.0) {
@@ -229,36 +258,36 @@ ScanMatch ScanMatcher::matchOutside(const std::vector<Eigen::Vector2d>& query_in
       return static_cast<int>(std::lround((v - lo) / res));
     };
     const double x_lo = window.guess.x - window.linear_m, y_lo = window.guess.y - window.linear_m;
-    search.ex_x0 = cell(excluded.guess.x - excluded.linear_m, x_lo);
-    search.ex_x1 = cell(excluded.guess.x + excluded.linear_m, x_lo);
-    search.ex_y0 = cell(excluded.guess.y - excluded.linear_m, y_lo);
-    search.ex_y1 = cell(excluded.guess.y + excluded.linear_m, y_lo);
+    bnb.ex_x0 = cell(excluded.guess.x - excluded.linear_m, x_lo);
+    bnb.ex_x1 = cell(excluded.guess.x + excluded.linear_m, x_lo);
+    bnb.ex_y0 = cell(excluded.guess.y - excluded.linear_m, y_lo);
+    bnb.ex_y1 = cell(excluded.guess.y + excluded.linear_m, y_lo);
     const double da = wrapAngle(excluded.guess.theta - window.guess.theta) / step;
     const double ha = excluded.angular_deg * M_PI / 180.0 / step;
-    search.ex_a0 = static_cast<int>(std::floor(da - ha)) + n_angles;
-    search.ex_a1 = static_cast<int>(std::ceil(da + ha)) + n_angles;
+    bnb.ex_a0 = static_cast<int>(std::floor(da - ha)) + n_angles;
+    bnb.ex_a1 = static_cast<int>(std::ceil(da + ha)) + n_angles;
   }
   const int top = options_.levels - 1;
   std::vector<Search::Block> roots;
   for (int a = 0; a <= 2 * n_angles; ++a) {
-    search.cells.push_back(cellsAt(query, window.guess.theta + (a - n_angles) * step, corner, res));
-    for (int y = 0; y < search.width; y += 1 << top) {
-      for (int x = 0; x < search.width; x += 1 << top) {
+    bnb.cells.push_back(cellsAt(query, window.guess.theta + (a - n_angles) * step, corner, res));
+    for (int y = 0; y < bnb.width; y += 1 << top) {
+      for (int x = 0; x < bnb.width; x += 1 << top) {
         Search::Block b{0, a, x, y, top};
-        b.bound = search.bound(b);
+        b.bound = bnb.bound(b);
         roots.push_back(b);
       }
     }
   }
-  search.descend(std::move(roots));
-  if (!search.found) {
+  bnb.descend(std::move(roots));
+  if (!bnb.found) {
     return ScanMatch{};
   }
-  const Search::Block& b = search.best_block;
+  const Search::Block& b = bnb.best_block;
   const Pose2 best{window.guess.x - window.linear_m + b.x * res,
                    window.guess.y - window.linear_m + b.y * res,
                    wrapAngle(window.guess.theta + (b.angle - n_angles) * step)};
-  return ScanMatch{true, best, search.best};
+  return ScanMatch{true, best, bnb.best};
 }
 
 }  // namespace pmap::poses

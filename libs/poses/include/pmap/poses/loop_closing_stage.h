@@ -36,6 +36,8 @@ class LoopClosingStage {
   void onScan(double t, const mrpt::obs::CObservation2DRangeScan::Ptr& scan);
   /// After every input step: the corrected trajectory follows the tracker's.
   void sync();
+  /// At the end of the input: a loop search still pending is applied.
+  void finish();
 
   const Trajectory& trajectory() const { return corrected_; }
   /// How many times a loop closure rewrote the past trajectory so far.

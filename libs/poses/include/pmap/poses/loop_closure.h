@@ -1,9 +1,10 @@
 // The pose graph back end behind the ICP front end (doc/poses.md, "Loop
 // closure"): keyframes every keyframe_distance_m / keyframe_angle_deg of
 // front-end motion, each linked to the previous one by the front end's
-// relative pose (an odometry edge whose information matrix comes from a
-// scan-to-scan match), and loop edges to older keyframes found by
-// scan-to-submap matching.
+// relative pose (an odometry edge whose standard deviations grow with the
+// distance moved and the turn: odometry_sigma_fraction, odometry_sigma_deg),
+// and loop edges to older keyframes found by scan-to-submap matching
+// (loop_search.h).
 //
 // At each new keyframe, older keyframes (at least min_loop_path_m of path
 // behind) whose estimated position lies inside a search window are
@@ -24,57 +25,18 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <deque>
+#include <future>
 #include <string>
 #include <vector>
 
 #include "pmap/poses/free_space.h"
+#include "pmap/poses/loop_closure_options.h"
+#include "pmap/poses/loop_search.h"
 #include "pmap/poses/pose_graph.h"
 #include "pmap/poses/scan_matcher.h"
 
 namespace pmap::poses {
-
-struct LoopClosureOptions {
-  bool enabled = false;              ///< [Poses] loop_closure
-  double keyframe_distance_m = 0.5;  ///< a keyframe every so much front-end travel (m)
-  double keyframe_angle_deg = 15.0;  ///< ... or turn (deg)
-  /// A loop joins keyframes at least this far apart along the path (m):
-  /// closer ones are the front end's own business.
-  double min_loop_path_m = 12.0;
-  double search_radius_m = 1.0;                ///< search window radius right after a closure (m)
-  double search_growth = 0.05;                 ///< its growth per metre travelled since (m/m)
-  double max_search_radius_m = 8.0;            ///< its cap (m)
-  double search_angle_deg = 10.0;              ///< angular window right after a closure (deg)
-  double search_angle_growth_deg_per_m = 0.2;  ///< its growth (deg/m)
-  double max_search_angle_deg = 40.0;          ///< its cap (deg)
-  int candidates_per_keyframe = 3;             ///< candidates verified per keyframe, at most
-  double submap_path_m = 8.0;  ///< a candidate's submap: keyframes within +-half along the path (m)
-  double query_path_m = 3.0;   ///< the query: keyframes this far back along the path (m)
-  /// Mean likelihood of the query points on the fine grid (sigma 5 cm) to
-  /// accept a match, [0, 1]. On the ACES log true loops score 0.4-0.63.
-  double min_score = 0.4;
-  /// A match is refused when another pose of the search window, at least
-  /// ambiguity_distance_m or 5 deg away, scores more than max_ambiguity of
-  /// the best, (0, 1]: the place is ambiguous (a corridor's axis).
-  double max_ambiguity = 0.9;
-  double ambiguity_distance_m = 1.0;
-  /// A match is refused when more than this fraction of one side's points
-  /// lie where the other side's beams passed freely (free_space.h), [0, 1].
-  /// 0.1: the simulated ring's one aliased match had 0.1-0.25, its true
-  /// ones at most 0.03 (ACES's, unverified, 0.01-0.3: see doc/poses.md).
-  double max_free_space_conflict = 0.1;
-  double free_space_margin_m = 0.3;  ///< the end of each beam not taken as free (m)
-  /// ... and when, of the beams that end on the other side's surfaces, the
-  /// fraction arriving through its free space is below this share of the
-  /// same fraction within each side (surfaces seen from behind), [0, 1].
-  double min_same_side_ratio = 0.6;
-  double max_chi2 = 11.34;                ///< a loop's e^T I e after solving (3 dof, 99 %)
-  double loop_sigma_m = 0.05;             ///< a loop edge's standard deviation (m)
-  double loop_sigma_deg = 1.0;            ///< ... and in heading (deg)
-  double odometry_sigma_fraction = 0.05;  ///< odometry edges: translation sigma per metre moved
-  double odometry_sigma_deg = 0.5;        ///< odometry edges: heading sigma, plus 5 % of the turn
-  double loop_loss_scale = 1.0;           ///< Cauchy scale of loop edges (whitened)
-  bool validate(std::string* why) const;
-};
 
 struct Keyframe {
   double t = 0;                         ///< s
@@ -103,17 +65,23 @@ struct LoopClosureStats {
   std::size_t rejected_free_space = 0;  ///< the best pose contradicts the beams' free space
   std::size_t rejected_chi2 = 0;        ///< taken out again after solving
   std::size_t accepted = 0;
-  double search_s = 0;  ///< wall time of candidate search and matching
+  double search_s = 0;  ///< wall time of candidate search and matching (worker thread or not)
   double solve_s = 0;   ///< wall time of the graph solves
+  double wait_s = 0;    ///< time the front end waited for a worker's search
 };
 
 class LoopClosingBackEnd {
  public:
   explicit LoopClosingBackEnd(LoopClosureOptions options, ScanMatchOptions match = {});
+  LoopClosingBackEnd(LoopClosingBackEnd&&) = default;
+  ~LoopClosingBackEnd();  ///< waits for a worker's search still running
 
   /// The front end's pose of a pose-laser scan at `t` and the scan's points
   /// (robot frame). Returns true when a loop closure moved the graph.
   bool addScan(double t, const Pose2& front, std::vector<Eigen::Vector2d> points);
+  /// At the end of the input: applies a search still pending on the worker.
+  /// Returns true when its loop closure moved the graph.
+  bool finish();
 
   /// The world pose of a front-end pose taken while `keyframe` was the newest.
   Pose2 corrected(std::size_t keyframe, const Pose2& front) const;
@@ -133,13 +101,11 @@ class LoopClosingBackEnd {
   Eigen::Matrix3d odometryInformation(std::size_t from, std::size_t to) const;
   bool closeLoop();
   std::vector<std::size_t> candidates(double radius) const;
-  enum class Verdict { kMatched, kNoMatch, kAmbiguous, kFreeSpaceConflict };
   std::vector<Rays> scansAround(std::size_t centre, double half_path_m, bool optimised,
                                 bool only_older) const;
-  bool freeSpaceAgrees(const std::vector<Rays>& submap, const std::vector<Rays>& query,
-                       const Pose2& match) const;
-  Verdict tryCandidate(std::size_t older, const std::vector<Rays>& query_scans, double radius,
-                       double angle_deg, PoseEdge& edge, ScanMatch& match) const;
+  LoopSearch prepareSearch() const;
+  bool apply(const LoopSearchResult& result);
+  bool applyOldest();
   bool acceptAfterSolve(const PoseEdge& edge, const ScanMatch& match);
 
   LoopClosureOptions options_;
@@ -152,6 +118,9 @@ class LoopClosingBackEnd {
   Pose2 last_front_;
   bool have_front_ = false;
   double path_at_last_closure_ = 0;
+  /// Searches running on workers (search_latency_keyframes > 0), oldest
+  /// first, each to be applied search_latency_keyframes after its keyframe.
+  std::deque<std::future<LoopSearchResult>> pending_;
 };
 
 }  // namespace pmap::poses

@@ -29,6 +29,9 @@ class PoseStage {
 
   /// Throws InputError (naming the record) when MRPT rejects an observation.
   void process(const input::InputStep& step, const std::string& file);
+  /// After the last step: with loop closure, a search still running on its
+  /// worker is applied (the trajectory may change once more).
+  void finish();
 
   const Trajectory& trajectory() const;
   /// True when every sample of trajectory() is final up to its last one

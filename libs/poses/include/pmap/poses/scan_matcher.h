@@ -67,8 +67,14 @@ class ScanMatcher {
   /// excluded.guess does not count): the runner-up of an ambiguous place.
   ScanMatch matchOutside(const std::vector<Eigen::Vector2d>& query, const MatchWindow& window,
                          const MatchWindow& excluded, double min_score) const;
+  /// Whether matchOutside() would find a pose: the search stops at the first
+  /// pose outside `excluded` scoring more than `min_score`.
+  bool anyOutside(const std::vector<Eigen::Vector2d>& query, const MatchWindow& window,
+                  const MatchWindow& excluded, double min_score) const;
 
  private:
+  ScanMatch search(const std::vector<Eigen::Vector2d>& query, const MatchWindow& window,
+                   const MatchWindow& excluded, double min_score, bool first_only) const;
   struct Grid {
     double x0 = 0, y0 = 0;  ///< lower corner (m)
     int cols = 0, rows = 0;

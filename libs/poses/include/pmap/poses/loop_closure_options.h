@@ -1,0 +1,58 @@
+// The options of loop closure ([Poses] loop_*, doc/configuration.md), shared
+// by the back end (loop_closure.h) and its search (loop_search.h).
+#pragma once
+
+#include <string>
+
+namespace pmap::poses {
+
+struct LoopClosureOptions {
+  bool enabled = false;              ///< [Poses] loop_closure
+  double keyframe_distance_m = 0.5;  ///< a keyframe every so much front-end travel (m)
+  double keyframe_angle_deg = 15.0;  ///< ... or turn (deg)
+  /// A loop joins keyframes at least this far apart along the path (m):
+  /// closer ones are the front end's own business.
+  double min_loop_path_m = 12.0;
+  double search_radius_m = 1.0;                ///< search window radius right after a closure (m)
+  double search_growth = 0.05;                 ///< its growth per metre travelled since (m/m)
+  double max_search_radius_m = 8.0;            ///< its cap (m)
+  double search_angle_deg = 10.0;              ///< angular window right after a closure (deg)
+  double search_angle_growth_deg_per_m = 0.2;  ///< its growth (deg/m)
+  double max_search_angle_deg = 40.0;          ///< its cap (deg)
+  int candidates_per_keyframe = 3;             ///< candidates verified per keyframe, at most
+  double submap_path_m = 8.0;  ///< a candidate's submap: keyframes within +-half along the path (m)
+  double query_path_m = 3.0;   ///< the query: keyframes this far back along the path (m)
+  /// Mean likelihood of the query points on the fine grid (sigma 5 cm) to
+  /// accept a match, [0, 1]. On the ACES log true loops score 0.4-0.63.
+  double min_score = 0.4;
+  /// A match is refused when another pose of the search window, at least
+  /// ambiguity_distance_m or 5 deg away, scores more than max_ambiguity of
+  /// the best, (0, 1]: the place is ambiguous (a corridor's axis).
+  double max_ambiguity = 0.9;
+  double ambiguity_distance_m = 1.0;
+  /// A match is refused when more than this fraction of one side's points
+  /// lie where the other side's beams passed freely (free_space.h), [0, 1].
+  /// 0.1: the simulated ring's one aliased match had 0.1-0.25, its true
+  /// ones at most 0.03 (ACES's, unverified, 0.01-0.3: see doc/poses.md).
+  double max_free_space_conflict = 0.1;
+  double free_space_margin_m = 0.3;  ///< the end of each beam not taken as free (m)
+  /// ... and when, of the beams that end on the other side's surfaces, the
+  /// fraction arriving through its free space is below this share of the
+  /// same fraction within each side (surfaces seen from behind), [0, 1].
+  double min_same_side_ratio = 0.6;
+  double max_chi2 = 11.34;                ///< a loop's e^T I e after solving (3 dof, 99 %)
+  double loop_sigma_m = 0.05;             ///< a loop edge's standard deviation (m)
+  double loop_sigma_deg = 1.0;            ///< ... and in heading (deg)
+  double odometry_sigma_fraction = 0.05;  ///< odometry edges: translation sigma per metre moved
+  double odometry_sigma_deg = 0.5;        ///< odometry edges: heading sigma, plus 5 % of the turn
+  double loop_loss_scale = 1.0;           ///< Cauchy scale of loop edges (whitened)
+  /// 0: each keyframe's search runs when the keyframe is added. N > 0: it
+  /// runs on a thread of its own and its result is applied when the keyframe
+  /// N keyframes later is added (waiting for it if need be), so the front
+  /// end goes on meanwhile (at most N searches at once). The same input
+  /// gives the same result whatever the threads' speed.
+  int search_latency_keyframes = 1;
+  bool validate(std::string* why) const;
+};
+
+}  // namespace pmap::poses

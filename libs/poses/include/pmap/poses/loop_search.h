@@ -1,0 +1,53 @@
+// One keyframe's loop-closure search (loop_closure.h): the candidates'
+// submaps and the query are copied out of the back end when the keyframe is
+// added, so that matching them touches no shared state and can run on a
+// worker thread while the front end goes on ([Poses]
+// loop_search_latency_keyframes). Each candidate is verified by a
+// coarse-to-fine correlative match (scan_matcher.h), a uniqueness test and a
+// free-space test; the best verified one is the result.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <vector>
+
+#include "pmap/poses/free_space.h"
+#include "pmap/poses/loop_closure_options.h"
+#include "pmap/poses/pose_graph.h"
+#include "pmap/poses/scan_matcher.h"
+
+namespace pmap::poses {
+
+/// An older keyframe to match against.
+struct LoopCandidate {
+  std::size_t older = 0;     ///< keyframe index
+  Pose2 guess;               ///< the newest keyframe in older's frame, from the graph
+  std::vector<Rays> submap;  ///< the scans around it (optimised poses), in older's frame
+};
+
+/// What a search needs, copied at the keyframe.
+struct LoopSearch {
+  std::size_t newest = 0;  ///< the keyframe searched for
+  double radius_m = 0;     ///< the search window (loop_closure.h)
+  double angle_deg = 0;
+  std::vector<Rays> query;  ///< the newest keyframe's recent scans (front-end poses), its frame
+  std::vector<LoopCandidate> candidates;
+};
+
+/// What it found.
+struct LoopSearchResult {
+  std::size_t newest = 0;
+  std::size_t candidates = 0;           ///< verified by a match
+  std::size_t rejected_match = 0;       ///< no pose of the window scored min_score
+  std::size_t rejected_ambiguous = 0;   ///< another pose scored nearly as well / window edge
+  std::size_t rejected_free_space = 0;  ///< the best pose contradicts the beams' free space
+  bool found = false;                   ///< a verified match: edge and match are set
+  PoseEdge edge;                        ///< older -> newest, loop_sigma_m / loop_sigma_deg
+  ScanMatch match;
+  double search_s = 0;  ///< wall time of the search
+};
+
+LoopSearchResult runLoopSearch(const LoopSearch& search, const LoopClosureOptions& options,
+                               const ScanMatchOptions& match_options);
+
+}  // namespace pmap::poses

@@ -1,0 +1,126 @@
+#include "pmap/poses/loop_search.h"
+
+#include <mrpt/core/bits_math.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace pmap::poses {
+namespace {
+
+enum class Verdict { kMatched, kNoMatch, kAmbiguous, kFreeSpaceConflict };
+
+// A match is refused when either side's points land where the other side's
+// beams passed freely (free_space.h).
+bool freeSpaceAgrees(const std::vector<Rays>& submap, const std::vector<Rays>& query,
+                     const Pose2& match, const LoopClosureOptions& options,
+                     const ScanMatchOptions& match_options) {
+  const double cell = 2.0 * match_options.resolution_m;
+  const double margin = options.free_space_margin_m, gap = match_options.max_gap_m;
+  const FreeSpace submap_space(submap, cell, margin, gap);
+  const FreeSpace query_space(query, cell, margin, gap);
+  const std::vector<Rays> query_there = moved(query, match);
+  const std::vector<Rays> submap_here = moved(submap, inverse(match));
+  const double conflict = std::max(submap_space.conflict(allEnds(query_there)),
+                                   query_space.conflict(allEnds(submap_here)));
+  const double same_side =
+      std::min(submap_space.sameSide(query_there), query_space.sameSide(submap_here));
+  // Relative to how consistent each side is with itself: real scans, with
+  // clutter and 1-degree beams, agree with themselves less than simulated ones.
+  const double own = std::min(submap_space.sameSide(submap), query_space.sameSide(query));
+  return conflict <= options.max_free_space_conflict &&
+         same_side >= options.min_same_side_ratio * own;
+}
+
+// Coarse to fine (Olson 2009): the whole window on a coarse, blurred grid
+// (4x the cell and sigma, 80 % of the score), then a small window around its
+// best pose on the fine grid.
+Verdict tryCandidate(const LoopCandidate& candidate, const std::vector<Rays>& query_scans,
+                     const LoopSearch& search, const LoopClosureOptions& options,
+                     const ScanMatchOptions& match_options, ScanMatch& match) {
+  const std::vector<Eigen::Vector2d> submap = allEnds(candidate.submap);
+  const std::vector<Eigen::Vector2d> query = allEnds(query_scans);
+  ScanMatchOptions coarse = match_options;
+  coarse.resolution_m = 4.0 * match_options.resolution_m;
+  coarse.sigma_m = 4.0 * match_options.sigma_m;
+  coarse.max_angle_step_deg = 1.0;
+  coarse.min_angle_step_deg = 0.5;
+  coarse.max_query_points = 150;
+  MatchWindow whole;
+  whole.guess = candidate.guess;
+  whole.linear_m = search.radius_m;
+  whole.angular_deg = search.angle_deg;
+  const ScanMatch rough = ScanMatcher(submap, coarse).match(query, whole, 0.8 * options.min_score);
+  if (!rough.found) {
+    return Verdict::kNoMatch;
+  }
+  MatchWindow near_rough;
+  near_rough.guess = rough.pose;
+  near_rough.linear_m = 2.0 * coarse.resolution_m;
+  near_rough.angular_deg = 2.0;
+  const ScanMatcher fine(submap, match_options);
+  match = fine.match(query, near_rough, options.min_score);
+  if (!match.found) {
+    return Verdict::kNoMatch;
+  }
+  // A best pose on the window's edge is no verified maximum: the score may
+  // rise beyond it (the search was cut off there).
+  const double edge_m = whole.linear_m - 2.0 * match_options.resolution_m;
+  if (std::abs(match.pose.x - whole.guess.x) >= edge_m ||
+      std::abs(match.pose.y - whole.guess.y) >= edge_m ||
+      std::abs(wrapAngle(match.pose.theta - whole.guess.theta)) >=
+          mrpt::DEG2RAD(whole.angular_deg - 1.0)) {
+    return Verdict::kAmbiguous;
+  }
+  // A place that looks the same elsewhere in the search window (a corridor's
+  // axis, a row of doors) gives no loop: the runner-up, at least
+  // ambiguity_distance_m or 5 deg from the best, must score clearly less.
+  MatchWindow near_best;
+  near_best.guess = match.pose;
+  near_best.linear_m = options.ambiguity_distance_m;
+  near_best.angular_deg = 5.0;
+  if (fine.anyOutside(query, whole, near_best, options.max_ambiguity * match.score)) {
+    return Verdict::kAmbiguous;
+  }
+  if (!freeSpaceAgrees(candidate.submap, query_scans, match.pose, options, match_options)) {
+    return Verdict::kFreeSpaceConflict;
+  }
+  return Verdict::kMatched;
+}
+
+}  // namespace
+
+LoopSearchResult runLoopSearch(const LoopSearch& search, const LoopClosureOptions& options,
+                               const ScanMatchOptions& match_options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  LoopSearchResult r;
+  r.newest = search.newest;
+  for (const LoopCandidate& c : search.candidates) {
+    ++r.candidates;
+    ScanMatch match;
+    const Verdict v = tryCandidate(c, search.query, search, options, match_options, match);
+    if (v != Verdict::kMatched) {
+      ++(v == Verdict::kNoMatch     ? r.rejected_match
+         : v == Verdict::kAmbiguous ? r.rejected_ambiguous
+                                    : r.rejected_free_space);
+      continue;
+    }
+    if (match.score > r.match.score) {  // the best verified candidate
+      r.found = true;
+      r.match = match;
+      r.edge.from = c.older;
+    }
+  }
+  if (r.found) {
+    r.edge.to = search.newest;
+    r.edge.measurement = r.match.pose;
+    const double st = options.loop_sigma_m, sr = mrpt::DEG2RAD(options.loop_sigma_deg);
+    r.edge.information = Eigen::Vector3d(1 / (st * st), 1 / (st * st), 1 / (sr * sr)).asDiagonal();
+    r.edge.loop = true;
+  }
+  r.search_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+}  // namespace pmap::poses
