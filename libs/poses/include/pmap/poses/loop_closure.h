@@ -74,13 +74,13 @@ class LoopClosingBackEnd {
  public:
   explicit LoopClosingBackEnd(LoopClosureOptions options, ScanMatchOptions match = {});
   LoopClosingBackEnd(LoopClosingBackEnd&&) = default;
-  ~LoopClosingBackEnd();  ///< waits for a worker's search still running
+  ~LoopClosingBackEnd();  ///< waits for the searches still running
 
   /// The front end's pose of a pose-laser scan at `t` and the scan's points
   /// (robot frame). Returns true when a loop closure moved the graph.
   bool addScan(double t, const Pose2& front, std::vector<Eigen::Vector2d> points);
-  /// At the end of the input: applies a search still pending on the worker.
-  /// Returns true when its loop closure moved the graph.
+  /// At the end of the input: applies the searches still pending, in
+  /// order. Returns true when one of their loop closures moved the graph.
   bool finish();
 
   /// The world pose of a front-end pose taken while `keyframe` was the newest.
