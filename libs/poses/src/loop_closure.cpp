@@ -235,8 +235,11 @@ bool LoopClosingBackEnd::closeLoop() {
 
 bool LoopClosingBackEnd::applyOldest() {
   const auto t0 = Clock::now();
-  const LoopSearchResult r = pending_.front().get();
+  // Out of the queue before get(): a search that threw leaves no future
+  // without a state behind (the destructor waits on the others).
+  std::future<LoopSearchResult> oldest = std::move(pending_.front());
   pending_.pop_front();
+  const LoopSearchResult r = oldest.get();
   stats_.wait_s += secondsSince(t0);
   return apply(r);
 }
@@ -251,7 +254,9 @@ bool LoopClosingBackEnd::finish() {
 
 LoopClosingBackEnd::~LoopClosingBackEnd() {
   for (auto& f : pending_) {
-    f.wait();
+    if (f.valid()) {
+      f.wait();
+    }
   }
 }
 

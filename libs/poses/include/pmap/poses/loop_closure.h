@@ -53,7 +53,7 @@ struct LoopClosure {
   double t = 0;        ///< time of the newer keyframe (s)
   Pose2 measurement;   ///< the newer keyframe's pose in the older one's frame (the match)
   double score = 0;
-  double moved_m = 0;   ///< how far the newest keyframe moved when the graph was solved
+  double moved_m = 0;   ///< how far the newer keyframe moved when the graph was solved
   double solve_ms = 0;  ///< that solve's wall time
 };
 
