@@ -24,22 +24,26 @@ sed 's/^loop_closure = true/loop_closure = false/' "$work/on.ini" > "$work/off.i
 sed '/^pose_laser_aperture_deg/d' "$work/off.ini" > "$work/off-file-aperture.ini"
 printf '@include %s\n[Output]\ngrid_resolution_m = 0.1\n' "$work/on.ini" > "$work/grid.ini"
 
-median_time() {  # median_time INI OUT: median wall time (s) of 3 runs
+median_seconds() {  # median_seconds CMD...: median wall time (s) of 3 runs of CMD
   local t=()
   for _ in 1 2 3; do
-    rm -rf "$2"
     local t0
     t0=$(date +%s.%N)
-    "$bin/planar-mapper" --config "$1" --rawlog "$radish/aces.rawlog" --poses-only --out "$2" -q
+    "$@"
     t+=("$(python3 -c "import sys; print('%.1f' % (float(sys.argv[1]) - float(sys.argv[2])))" \
       "$(date +%s.%N)" "$t0")")
   done
   printf '%s\n' "${t[@]}" | sort -n | sed -n 2p
 }
 
+map_aces() {  # map_aces INI OUT: the pose stage on aces.rawlog
+  rm -rf "$2"
+  "$bin/planar-mapper" --config "$1" --rawlog "$radish/aces.rawlog" --poses-only --out "$2" -q
+}
+
 row() {  # row NAME INI
   local out="$work/$1"
-  scored "$1" "$out/poses.txt" "$(median_time "$2" "$out")"
+  scored "$1" "$out/poses.txt" "$(median_seconds map_aces "$2" "$out")"
 }
 
 scored() {  # scored NAME POSES SECONDS: a table row
@@ -70,16 +74,11 @@ icp_slam_row() {
     -e 's#^SAVE_3D_SCENE=.*#SAVE_3D_SCENE=0#' -e 's#^CAMERA_3DSCENE_FOLLOWS_ROBOT=.*#CAMERA_3DSCENE_FOLLOWS_ROBOT=0#' \
     -e 's#^SHOW_PROGRESS_3D_REAL_TIME=.*#SHOW_PROGRESS_3D_REAL_TIME=false#' \
     -e 's#^SHOW_LASER_SCANS_3D.*#SHOW_LASER_SCANS_3D = false#' "$lm" > "$work/icp-slam.ini"
-  local t=()
-  for _ in 1 2 3; do
-    local t0
-    t0=$(date +%s.%N)
+  run_icp_slam() {
     icp-slam "$work/icp-slam.ini" "$radish/aces.rawlog" < /dev/null > "$work/icp-slam.log" 2>&1
-    t+=("$(python3 -c "import sys; print('%.1f' % (float(sys.argv[1]) - float(sys.argv[2])))" \
-      "$(date +%s.%N)" "$t0")")
-  done
+  }
   local secs
-  secs=$(printf '%s\n' "${t[@]}" | sort -n | sed -n 2p)
+  secs=$(median_seconds run_icp_slam)
   awk 'NR % 2 == 0 {print NR / 2, $2, $3, 0, $4, 0, 0}' "$work/icp-slam/log_estimated_path.txt" \
     > "$work/icp-slam-poses.txt"
   scored "MRPT icp-slam, icp-slam_demo_LM.ini, the file's aperture" "$work/icp-slam-poses.txt" "$secs"

@@ -17,7 +17,6 @@ grep -q "^loop_closure = false" "$work/lc-false.ini"
 sed 's/^pose_laser = LASER_H .*/pose_laser = none/' config/default.ini > "$work/odometry.ini"
 cp config/icp.ini "$work/"
 
-f3() { python3 -c "import sys; print('%.3f' % float(sys.argv[1]))" "$1"; }
 rows=""
 run_one() {  # run_one WORLD SEED full|poses
   local world=$1 seed=$2 p="$work/$1-$2" extra=()

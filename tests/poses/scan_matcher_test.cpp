@@ -136,6 +136,7 @@ TEST(ScanMatcher, Item15_TheRunnerUpTellsAnAmbiguousPlaceFromAUniqueOne) {
       std::max(std::abs(runner_up.pose.x - best.pose.x), std::abs(runner_up.pose.y - best.pose.y)),
       1.0 - 1e-9);
   EXPECT_GE(runner_up.score, 0.9 * best.score);
+  EXPECT_TRUE(in_corridor.anyOutside(query, window, near, 0.9 * best.score));
 
   const auto world = room(8.0, 5.0, true);
   const Pose2 in_room{3.2, 2.1, 0.35};
@@ -152,6 +153,7 @@ TEST(ScanMatcher, Item15_TheRunnerUpTellsAnAmbiguousPlaceFromAUniqueOne) {
   EXPECT_FALSE(
       room_matcher.matchOutside(room_query, around_room, near, 0.9 * room_best.score).found)
       << "the room with boxes is unique in its window";
+  EXPECT_FALSE(room_matcher.anyOutside(room_query, around_room, near, 0.9 * room_best.score));
 }
 
 }  // namespace

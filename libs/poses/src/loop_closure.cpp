@@ -236,7 +236,7 @@ bool LoopClosingBackEnd::closeLoop() {
 bool LoopClosingBackEnd::applyOldest() {
   const auto t0 = Clock::now();
   // Out of the queue before get(): a search that threw leaves no future
-  // without a state behind (the destructor waits on the others).
+  // without a state behind.
   std::future<LoopSearchResult> oldest = std::move(pending_.front());
   pending_.pop_front();
   const LoopSearchResult r = oldest.get();
@@ -250,14 +250,6 @@ bool LoopClosingBackEnd::finish() {
     moved = applyOldest() || moved;
   }
   return moved;
-}
-
-LoopClosingBackEnd::~LoopClosingBackEnd() {
-  for (auto& f : pending_) {
-    if (f.valid()) {
-      f.wait();
-    }
-  }
 }
 
 // Solves the graph with the loop; keeps it only if the graph agrees with it.

@@ -36,11 +36,10 @@ bool freeSpaceAgrees(const std::vector<Rays>& submap, const std::vector<Rays>& q
 // Coarse to fine (Olson 2009): the whole window on a coarse, blurred grid
 // (4x the cell and sigma, 80 % of the score), then a small window around its
 // best pose on the fine grid.
-Verdict tryCandidate(const LoopCandidate& candidate, const std::vector<Rays>& query_scans,
+Verdict tryCandidate(const LoopCandidate& candidate, const std::vector<Eigen::Vector2d>& query,
                      const LoopSearch& search, const LoopClosureOptions& options,
                      const ScanMatchOptions& match_options, ScanMatch& match) {
   const std::vector<Eigen::Vector2d> submap = allEnds(candidate.submap);
-  const std::vector<Eigen::Vector2d> query = allEnds(query_scans);
   ScanMatchOptions coarse = match_options;
   coarse.resolution_m = 4.0 * match_options.resolution_m;
   coarse.sigma_m = 4.0 * match_options.sigma_m;
@@ -83,7 +82,7 @@ Verdict tryCandidate(const LoopCandidate& candidate, const std::vector<Rays>& qu
   if (fine.anyOutside(query, whole, near_best, options.max_ambiguity * match.score)) {
     return Verdict::kAmbiguous;
   }
-  if (!freeSpaceAgrees(candidate.submap, query_scans, match.pose, options, match_options)) {
+  if (!freeSpaceAgrees(candidate.submap, search.query, match.pose, options, match_options)) {
     return Verdict::kFreeSpaceConflict;
   }
   return Verdict::kMatched;
@@ -95,11 +94,11 @@ LoopSearchResult runLoopSearch(const LoopSearch& search, const LoopClosureOption
                                const ScanMatchOptions& match_options) {
   const auto t0 = std::chrono::steady_clock::now();
   LoopSearchResult r;
-  r.newest = search.newest;
+  const std::vector<Eigen::Vector2d> query = allEnds(search.query);  // the same for every candidate
   for (const LoopCandidate& c : search.candidates) {
     ++r.candidates;
     ScanMatch match;
-    const Verdict v = tryCandidate(c, search.query, search, options, match_options, match);
+    const Verdict v = tryCandidate(c, query, search, options, match_options, match);
     if (v != Verdict::kMatched) {
       ++(v == Verdict::kNoMatch     ? r.rejected_match
          : v == Verdict::kAmbiguous ? r.rejected_ambiguous

@@ -73,8 +73,6 @@ struct LoopClosureStats {
 class LoopClosingBackEnd {
  public:
   explicit LoopClosingBackEnd(LoopClosureOptions options, ScanMatchOptions match = {});
-  LoopClosingBackEnd(LoopClosingBackEnd&&) = default;
-  ~LoopClosingBackEnd();  ///< waits for the searches still running
 
   /// The front end's pose of a pose-laser scan at `t` and the scan's points
   /// (robot frame). Returns true when a loop closure moved the graph.
@@ -120,6 +118,7 @@ class LoopClosingBackEnd {
   double path_at_last_closure_ = 0;
   /// Searches running on workers (search_latency_keyframes > 0), oldest
   /// first, each to be applied search_latency_keyframes after its keyframe.
+  /// A std::async future waits for its thread when destroyed.
   std::deque<std::future<LoopSearchResult>> pending_;
 };
 

@@ -36,7 +36,6 @@ struct LoopSearch {
 
 /// What it found.
 struct LoopSearchResult {
-  std::size_t newest = 0;
   std::size_t candidates = 0;           ///< verified by a match
   std::size_t rejected_match = 0;       ///< no pose of the window scored min_score
   std::size_t rejected_ambiguous = 0;   ///< another pose scored nearly as well / window edge
