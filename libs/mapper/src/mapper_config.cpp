@@ -101,6 +101,11 @@ void PosesSection::load(config::SectionReader& r) {
   r.read("odometry_sigma_deg", l.odometry_sigma_deg);
   r.read("loop_loss_scale", l.loop_loss_scale);
   r.read("loop_search_latency_keyframes", l.search_latency_keyframes);
+  r.read("keyframe_refinement", l.refine_keyframes);
+  r.read("keyframe_refine_map_path_m", l.refine_map_path_m);
+  r.read("keyframe_refine_sigma_m", l.refine.sigma_m);
+  r.read("keyframe_refine_max_distance_m", l.refine.max_distance_m);
+  r.read("keyframe_refine_information_scale", l.refine.information_scale);
 }
 
 void OutputOptions::load(config::SectionReader& reader) {

@@ -261,6 +261,7 @@ json summaryJson(const MapperArgs& args, const MappingResult& r, const StageCloc
   if (poses.loops) {
     const poses::LoopClosureStats& l = *poses.loops;
     s["poses"]["loop_closure"] = {{"keyframes", l.keyframes},
+                                  {"refined_edges", l.refined_edges},
                                   {"candidates", l.candidates},
                                   {"rejected_by_score", l.rejected_match},
                                   {"rejected_as_ambiguous", l.rejected_ambiguous},

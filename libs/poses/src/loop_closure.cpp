@@ -72,7 +72,11 @@ bool LoopClosureOptions::validate(std::string* why) const {
     *why = "loop_search_latency_keyframes must be in [0, 100]";
     return false;
   }
-  return true;
+  if (!(refine_map_path_m > 0.0) || !std::isfinite(refine_map_path_m)) {
+    *why = "keyframe_refine_map_path_m must be a finite number > 0";
+    return false;
+  }
+  return refine.validate(why);
 }
 
 LoopClosingBackEnd::LoopClosingBackEnd(LoopClosureOptions options, ScanMatchOptions match)
@@ -111,25 +115,56 @@ void LoopClosingBackEnd::addKeyframe(double t, const Pose2& front,
                                      std::vector<Eigen::Vector2d> points) {
   Keyframe k{t, front, path_m_, std::move(points)};
   const std::size_t id = keyframes_.size();
-  // Its estimate: the newest keyframe's corrected pose, moved by the front end.
-  graph_.addNode(keyframes_.empty() ? front : corrected(id - 1, front));
+  if (id == 0) {
+    graph_.addNode(front);
+    keyframes_.push_back(std::move(k));
+    ++stats_.keyframes;
+    return;
+  }
+  PoseEdge e;
+  e.from = id - 1;
+  e.to = id;
+  e.measurement = between(keyframes_[id - 1].front, front);
+  e.information = odometryInformation(keyframes_[id - 1].front, front);
+  if (options_.refine_keyframes && refineEdge(k.points, e)) {
+    ++stats_.refined_edges;
+  }
+  // Its estimate: the newest keyframe's pose, moved by the edge.
+  graph_.addNode(compose(graph_.node(id - 1), e.measurement));
   keyframes_.push_back(std::move(k));
   ++stats_.keyframes;
-  if (id > 0) {
-    PoseEdge e;
-    e.from = id - 1;
-    e.to = id;
-    e.measurement = between(keyframes_[id - 1].front, front);
-    e.information = odometryInformation(id - 1, id);
-    graph_.addEdge(e);
+  graph_.addEdge(e);
+}
+
+// The edge from the newest keyframe to a new one whose points are `points`,
+// refined against the keyframes of the last refine_map_path_m of path
+// (placed with the graph's poses, in the newest keyframe's frame).
+bool LoopClosingBackEnd::refineEdge(const std::vector<Eigen::Vector2d>& points,
+                                    PoseEdge& edge) const {
+  const std::size_t last = newest();
+  std::vector<Rays> map_scans;
+  for (std::size_t i = last + 1; i-- > 0;) {
+    if (keyframes_[last].path_m - keyframes_[i].path_m > options_.refine_map_path_m) {
+      break;
+    }
+    map_scans.push_back(inFrame(graph_.node(last), graph_.node(i), keyframes_[i].points));
   }
+  const LineMap map(map_scans, options_.refine);
+  const RefinedPose r =
+      refinePose(map, points, edge.measurement, edge.information, options_.refine);
+  if (!r.refined) {
+    return false;
+  }
+  edge.measurement = r.pose;
+  edge.information = r.information;
+  return true;
 }
 
 // What the front end's relative pose is worth: odometry_sigma_fraction of
 // the distance moved (at least 1 cm), odometry_sigma_deg plus a twentieth of
 // the turn.
-Eigen::Matrix3d LoopClosingBackEnd::odometryInformation(std::size_t from, std::size_t to) const {
-  const Pose2 z = between(keyframes_[from].front, keyframes_[to].front);
+Eigen::Matrix3d LoopClosingBackEnd::odometryInformation(const Pose2& from, const Pose2& to) const {
+  const Pose2 z = between(from, to);
   const double sigma_t = std::max(0.01, options_.odometry_sigma_fraction * std::hypot(z.x, z.y));
   const double sigma_r = mrpt::DEG2RAD(options_.odometry_sigma_deg) + 0.05 * std::abs(z.theta);
   return Eigen::Vector3d(1.0 / (sigma_t * sigma_t), 1.0 / (sigma_t * sigma_t),

@@ -1,10 +1,11 @@
 // The pose graph back end behind the ICP front end (doc/poses.md, "Loop
 // closure"): keyframes every keyframe_distance_m / keyframe_angle_deg of
 // front-end motion, each linked to the previous one by the front end's
-// relative pose (an odometry edge whose standard deviations grow with the
-// distance moved and the turn: odometry_sigma_fraction, odometry_sigma_deg),
-// and loop edges to older keyframes found by scan-to-submap matching
-// (loop_search.h).
+// relative pose (whose standard deviations grow with the distance moved and
+// the turn: odometry_sigma_fraction, odometry_sigma_deg), refined
+// point-to-line against the recent keyframes with that as its prior, its
+// information from the match (refine_keyframes, scan_refiner.h), and loop
+// edges to older keyframes found by scan-to-submap matching (loop_search.h).
 //
 // At each new keyframe, older keyframes (at least min_loop_path_m of path
 // behind) whose estimated position lies inside a search window are
@@ -59,6 +60,7 @@ struct LoopClosure {
 
 struct LoopClosureStats {
   std::size_t keyframes = 0;
+  std::size_t refined_edges = 0;        ///< keyframe edges refined point-to-line
   std::size_t candidates = 0;           ///< verified by a scan-to-submap match
   std::size_t rejected_match = 0;       ///< no pose of the window scored min_score
   std::size_t rejected_ambiguous = 0;   ///< another pose of the window scored nearly as well
@@ -96,7 +98,8 @@ class LoopClosingBackEnd {
  private:
   bool isKeyframe(const Pose2& front) const;
   void addKeyframe(double t, const Pose2& front, std::vector<Eigen::Vector2d> points);
-  Eigen::Matrix3d odometryInformation(std::size_t from, std::size_t to) const;
+  Eigen::Matrix3d odometryInformation(const Pose2& from, const Pose2& to) const;
+  bool refineEdge(const std::vector<Eigen::Vector2d>& points, PoseEdge& edge) const;
   bool closeLoop();
   std::vector<std::size_t> candidates(double radius) const;
   std::vector<Rays> scansAround(std::size_t centre, double half_path_m, bool optimised,

@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include "pmap/poses/scan_refiner.h"
+
 namespace pmap::poses {
 
 struct LoopClosureOptions {
@@ -52,6 +54,12 @@ struct LoopClosureOptions {
   /// end goes on meanwhile (at most N searches at once). The same input
   /// gives the same result whatever the threads' speed.
   int search_latency_keyframes = 1;
+  /// Each keyframe's edge from the previous one refined point-to-line
+  /// against the keyframes of the last refine_map_path_m, placed with the
+  /// graph's poses (scan_refiner.h); its information from that match.
+  bool refine_keyframes = true;
+  double refine_map_path_m = 5.0;
+  ScanRefineOptions refine;
   bool validate(std::string* why) const;
 };
 

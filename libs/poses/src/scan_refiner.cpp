@@ -1,0 +1,172 @@
+#include "pmap/poses/scan_refiner.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+
+namespace pmap::poses {
+
+bool ScanRefineOptions::validate(std::string* why) const {
+  const double positive[] = {sigma_m,       max_distance_m, max_gap_m,
+                             max_thickness, huber_sigmas,   information_scale};
+  for (const double v : positive) {
+    if (!(v > 0.0) || !std::isfinite(v)) {
+      *why = "keyframe refinement lengths, thresholds and scales must be finite and > 0";
+      return false;
+    }
+  }
+  if (max_thickness > 1.0 || information_scale > 1.0) {
+    *why = "keyframe refinement max_thickness and information_scale must be <= 1";
+    return false;
+  }
+  if (normal_half_width < 1 || max_iterations < 1 || min_matches < 3) {
+    *why =
+        "keyframe refinement needs normal_half_width >= 1, max_iterations >= 1 and min_matches "
+        ">= 3";
+    return false;
+  }
+  return true;
+}
+
+LineMap::LineMap(const std::vector<Rays>& scans, const ScanRefineOptions& options)
+    : cell_m_(options.max_distance_m), max_distance_m_(options.max_distance_m) {
+  const int k = options.normal_half_width;
+  for (const Rays& scan : scans) {
+    const std::vector<Eigen::Vector2d>& p = scan.ends;
+    const int n = static_cast<int>(p.size());
+    for (int i = 0; i < n; ++i) {
+      // The beam's neighbours along the scan, while consecutive ones are
+      // closer than max_gap_m: one surface.
+      int lo = i, hi = i;
+      while (lo > 0 && lo > i - k && (p[lo] - p[lo - 1]).norm() <= options.max_gap_m) {
+        --lo;
+      }
+      while (hi + 1 < n && hi < i + k && (p[hi + 1] - p[hi]).norm() <= options.max_gap_m) {
+        ++hi;
+      }
+      if (hi - lo < 2) {
+        continue;  // fewer than three points: no line
+      }
+      Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+      for (int j = lo; j <= hi; ++j) {
+        mean += p[j];
+      }
+      mean /= static_cast<double>(hi - lo + 1);
+      Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+      for (int j = lo; j <= hi; ++j) {
+        cov += (p[j] - mean) * (p[j] - mean).transpose();
+      }
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
+      const double small = std::max(eig.eigenvalues()(0), 0.0), large = eig.eigenvalues()(1);
+      if (!(large > 0.0) || std::sqrt(small / large) > options.max_thickness) {
+        continue;  // a corner, or beams so close that the noise hides the line
+      }
+      points_.push_back(p[i]);
+      normals_.push_back(eig.eigenvectors().col(0).normalized());
+    }
+  }
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    cells_[key(cellOf(points_[i].x()), cellOf(points_[i].y()))].push_back(i);
+  }
+}
+
+int LineMap::cellOf(double v) const {
+  return static_cast<int>(std::floor(v / cell_m_));
+}
+
+std::int64_t LineMap::key(int cx, int cy) const {
+  return (static_cast<std::int64_t>(cx) << 32) ^ static_cast<std::uint32_t>(cy);
+}
+
+bool LineMap::nearest(const Eigen::Vector2d& p, Eigen::Vector2d* point,
+                      Eigen::Vector2d* normal) const {
+  double best = max_distance_m_ * max_distance_m_;
+  std::size_t found = points_.size();
+  const int cx = cellOf(p.x()), cy = cellOf(p.y());
+  for (int dx = -1; dx <= 1; ++dx) {
+    for (int dy = -1; dy <= 1; ++dy) {
+      const auto it = cells_.find(key(cx + dx, cy + dy));
+      if (it == cells_.end()) {
+        continue;
+      }
+      for (const std::size_t j : it->second) {
+        const double d2 = (points_[j] - p).squaredNorm();
+        if (d2 <= best) {  // ties: the lower index, the same whatever the hash order
+          if (d2 < best || j < found) {
+            best = d2;
+            found = j;
+          }
+        }
+      }
+    }
+  }
+  if (found == points_.size()) {
+    return false;
+  }
+  *point = points_[found];
+  *normal = normals_[found];
+  return true;
+}
+
+namespace {
+
+Eigen::Vector3d difference(const Pose2& a, const Pose2& b) {
+  return {a.x - b.x, a.y - b.y, wrapAngle(a.theta - b.theta)};
+}
+
+}  // namespace
+
+RefinedPose refinePose(const LineMap& map, const std::vector<Eigen::Vector2d>& query,
+                       const Pose2& guess, const Eigen::Matrix3d& prior,
+                       const ScanRefineOptions& options) {
+  RefinedPose out;
+  out.pose = guess;
+  out.information = prior;
+  Pose2 x = guess;
+  const double inv_var = 1.0 / (options.sigma_m * options.sigma_m);
+  const double k = options.huber_sigmas * options.sigma_m;
+  Eigen::Matrix3d h_points = Eigen::Matrix3d::Zero();
+  int matches = 0;
+  for (int it = 0; it < options.max_iterations; ++it) {
+    const double c = std::cos(x.theta), s = std::sin(x.theta);
+    Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d g = Eigen::Vector3d::Zero();
+    matches = 0;
+    for (const Eigen::Vector2d& p : query) {
+      const Eigen::Vector2d rp(c * p.x() - s * p.y(), s * p.x() + c * p.y());
+      const Eigen::Vector2d w(rp.x() + x.x, rp.y() + x.y);
+      Eigen::Vector2d q, n;
+      if (!map.nearest(w, &q, &n)) {
+        continue;
+      }
+      ++matches;
+      const double r = n.dot(w - q);
+      const double weight = std::abs(r) <= k ? 1.0 : k / std::abs(r);  // Huber (IRLS)
+      const Eigen::Vector3d j(n.x(), n.y(), n.x() * -rp.y() + n.y() * rp.x());
+      h += weight * inv_var * j * j.transpose();
+      g += weight * inv_var * r * j;
+    }
+    if (matches < options.min_matches) {
+      return out;  // the prior, unrefined
+    }
+    const Eigen::Vector3d dx = difference(x, guess);
+    const Eigen::Vector3d step = -(h + prior).ldlt().solve(g + prior * dx);
+    if (!step.allFinite()) {
+      return out;
+    }
+    x = {x.x + step.x(), x.y + step.y(), wrapAngle(x.theta + step.z())};
+    h_points = h;
+    out.iterations = it + 1;
+    if (step.head<2>().norm() < 1e-5 && std::abs(step.z()) < 1e-6) {
+      break;
+    }
+  }
+  out.refined = true;
+  out.pose = x;
+  out.matches = matches;
+  out.information = options.information_scale * h_points + prior;
+  return out;
+}
+
+}  // namespace pmap::poses
