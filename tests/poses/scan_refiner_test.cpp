@@ -142,6 +142,19 @@ TEST(ScanRefiner, LineMapKeepsOnlyPointsOnLines) {
   EXPECT_EQ(LineMap({sparse}, ScanRefineOptions{}).size(), 0u);
 }
 
+// Cells of points far out (1e12 m) and on negative coordinates are hashed
+// without overflow (an edge cell), and a look-up there finds nothing.
+TEST(ScanRefiner, FarPointsDoNotOverflowTheGrid) {
+  Rays far;
+  for (int i = 0; i < 10; ++i) {
+    far.ends.emplace_back(-1e12, 0.1 * i);
+  }
+  const LineMap map({far}, ScanRefineOptions{});
+  Eigen::Vector2d q, n;
+  EXPECT_FALSE(map.nearest({0.0, 0.0}, &q, &n));
+  EXPECT_FALSE(map.nearest({1e12, -1e12}, &q, &n));
+}
+
 TEST(ScanRefineOptions, ValidateRejectsNonsense) {
   std::string why;
   EXPECT_TRUE(ScanRefineOptions{}.validate(&why)) << why;

@@ -71,12 +71,16 @@ LineMap::LineMap(const std::vector<Rays>& scans, const ScanRefineOptions& option
   }
 }
 
+// Clamped: a far point (or a NaN) lands in an edge cell instead of
+// overflowing the int.
 int LineMap::cellOf(double v) const {
-  return static_cast<int>(std::floor(v / cell_m_));
+  const double c = std::floor(v / cell_m_);
+  return c >= -1e9 && c <= 1e9 ? static_cast<int>(c) : (c > 0 ? 1000000000 : -1000000000);
 }
 
 std::int64_t LineMap::key(int cx, int cy) const {
-  return (static_cast<std::int64_t>(cx) << 32) ^ static_cast<std::uint32_t>(cy);
+  const std::uint64_t hi = static_cast<std::uint32_t>(cx), lo = static_cast<std::uint32_t>(cy);
+  return static_cast<std::int64_t>((hi << 32) | lo);
 }
 
 bool LineMap::nearest(const Eigen::Vector2d& p, Eigen::Vector2d* point,
