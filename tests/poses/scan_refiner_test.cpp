@@ -1,8 +1,9 @@
-// Issue 15: point-to-line refinement of keyframe and loop edges
-// (scan_refiner.h): it recovers a known pose from a wrong guess where the
-// scene constrains it, keeps the guess where it does not (a corridor's
+// Issue 15: point-to-line refinement of keyframe edges (scan_refiner.h): it recovers a known pose
+// from a wrong guess where the scene constrains it, keeps the guess where it does not (a corridor's
 // axis), and its information says which is which.
 #include "pmap/poses/scan_refiner.h"
+
+#include "pmap/poses/loop_closure_options.h"
 
 #include <gtest/gtest.h>
 
@@ -129,7 +130,7 @@ TEST(ScanRefiner, LineMapKeepsOnlyPointsOnLines) {
   }
   const LineMap map({corner}, ScanRefineOptions{});
   EXPECT_LT(map.size(), corner.ends.size());
-  EXPECT_GE(map.size(), corner.ends.size() - 8);  // those within normal_radius_m of the corner
+  EXPECT_GE(map.size(), corner.ends.size() - 8);  // those whose neighbours turn the corner
   Eigen::Vector2d q, n;
   ASSERT_TRUE(map.nearest({1.05, 0.3}, &q, &n));
   EXPECT_NEAR(std::abs(n.x()), 1.0, 1e-9);  // the wall x = 1
@@ -153,6 +154,15 @@ TEST(ScanRefiner, FarPointsDoNotOverflowTheGrid) {
   Eigen::Vector2d q, n;
   EXPECT_FALSE(map.nearest({0.0, 0.0}, &q, &n));
   EXPECT_FALSE(map.nearest({1e12, -1e12}, &q, &n));
+  EXPECT_FALSE(map.nearest({std::nan(""), 0.0}, &q, &n));
+  // Near a point 1 m from the origin on the negative side: found.
+  Rays near;
+  for (int i = 0; i < 10; ++i) {
+    near.ends.emplace_back(-1.0, -0.1 * i);
+  }
+  const LineMap negative({near}, ScanRefineOptions{});
+  ASSERT_TRUE(negative.nearest({-1.05, -0.32}, &q, &n));
+  EXPECT_NEAR(q.y(), -0.3, 1e-12);
 }
 
 TEST(ScanRefineOptions, ValidateRejectsNonsense) {
@@ -170,6 +180,20 @@ TEST(ScanRefineOptions, ValidateRejectsNonsense) {
   o = {};
   o.max_distance_m = std::nan("");
   EXPECT_FALSE(o.validate(&why));
+  o = {};
+  o.sigma_m = 1e-200;  // would make 1 / sigma^2 infinite
+  EXPECT_FALSE(o.validate(&why));
+  o = {};
+  o.normal_half_width = 1 << 30;
+  EXPECT_FALSE(o.validate(&why));
+  LoopClosureOptions l;
+  EXPECT_TRUE(l.validate(&why)) << why;
+  l.refine_map_path_m = 0.0;
+  EXPECT_FALSE(l.validate(&why));
+  EXPECT_NE(why.find("keyframe_refine_map_path_m"), std::string::npos) << why;
+  l = {};
+  l.refine.information_scale = 0.0;
+  EXPECT_FALSE(l.validate(&why));
 }
 
 }  // namespace
