@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <string>
 
@@ -115,7 +116,7 @@ Drive drive(const std::vector<Segment>& world, const std::vector<Pose2>& path,
     back_end.addScan(t += 0.1, front, scan(world, path[i], rng));
   }
   back_end.finish();
-  const Pose2 corrected = back_end.corrected(back_end.newest(), front);
+  const Pose2 corrected = back_end.corrected(back_end.anchor(), front);
   const Pose2& truth = path.back();
   return {std::hypot(front.x - truth.x, front.y - truth.y),
           std::hypot(corrected.x - truth.x, corrected.y - truth.y), back_end.stats(), corrected};
@@ -190,6 +191,55 @@ TEST(LoopClosure, RefinedKeyframeEdgesAloneReduceABiasedDrift) {
   EXPECT_EQ(r.stats.candidates, 0u);
   EXPECT_GT(r.stats.refined_edges, 0u);
   EXPECT_LT(r.corrected_error_m, r.front_error_m);
+}
+
+// Drives `path` with a front end that is right on average but jitters
+// scan by scan (sigma 3 cm and 0.5 deg, independent per scan, as a scan
+// matcher does where the walls barely constrain it); returns the mean
+// translation error of the relative pose between consecutive scans, each
+// corrected right after it was added (the drift along the ring is left
+// out: that is the keyframe edges' part).
+double meanStepError(const std::vector<Pose2>& path, LoopClosureOptions options,
+                     LoopClosureStats* stats) {
+  const auto world = ringWorld();
+  std::mt19937 rng(11);
+  std::normal_distribution<double> jitter_m(0.0, 0.03), jitter_rad(0.0, 0.5 * M_PI / 180.0);
+  LoopClosingBackEnd back_end(options);
+  double sum = 0, t = 0;
+  Pose2 last;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    const Pose2& truth = path[i];
+    const Pose2 front{truth.x + jitter_m(rng), truth.y + jitter_m(rng),
+                      truth.theta + jitter_rad(rng)};
+    back_end.addScan(t += 0.1, front, scan(world, truth, rng));
+    const Pose2 c = back_end.corrected(back_end.anchor(), front);
+    if (i > 0) {
+      const Pose2 step = between(last, c), true_step = between(path[i - 1], truth);
+      sum += std::hypot(step.x - true_step.x, step.y - true_step.y);
+    }
+    last = c;
+  }
+  *stats = back_end.stats();
+  return sum / static_cast<double>(path.size() - 1);
+}
+
+// keyframe_refine_scans: the scans between keyframes are refined against
+// the recent keyframes' lines too, instead of following their keyframe
+// with the front end's relative pose; the front end's scan-to-scan jitter
+// goes (measured: 0.052 m per step with keyframes only, 0.012 m).
+TEST(LoopClosure, RefinedScansTakeOutTheFrontEndsJitter) {
+  const auto path = ringPath(1);
+  LoopClosureOptions keyframes_only;
+  keyframes_only.refine_scans = false;
+  LoopClosureOptions every_scan;
+  LoopClosureStats off_stats, on_stats;
+  const double off = meanStepError(path, keyframes_only, &off_stats);
+  const double on = meanStepError(path, every_scan, &on_stats);
+  EXPECT_EQ(off_stats.refined_scans, 0u);
+  // nearly every scan that is no keyframe (the ring's walls are always in view)
+  EXPECT_GE(on_stats.refined_scans, 0.95 * static_cast<double>(path.size() - on_stats.keyframes));
+  EXPECT_LT(on, 0.5 * off) << "keyframes only " << off << " m, every scan " << on << " m";
+  std::printf("step error: keyframes only %.4f m, every scan %.4f m\n", off, on);
 }
 
 // A long bare corridor driven there and back: every place looks like every

@@ -103,6 +103,7 @@ void PosesSection::load(config::SectionReader& r) {
   r.read("loop_search_latency_keyframes", l.search_latency_keyframes);
   r.read("keyframe_refinement", l.refine_keyframes);
   r.read("keyframe_refine_map_path_m", l.refine_map_path_m);
+  r.read("keyframe_refine_scans", l.refine_scans);
   r.read("keyframe_refine_sigma_m", l.refine.sigma_m);
   r.read("keyframe_refine_max_distance_m", l.refine.max_distance_m);
   r.read("keyframe_refine_information_scale", l.refine.information_scale);

@@ -49,21 +49,21 @@ TimedPose LoopClosingStage::correctedSample(std::size_t i) const {
   if (back_end_.empty()) {
     return p;
   }
-  const Pose2 c = back_end_.corrected(sample_keyframe_[i], pose2(p.pose));
+  const Pose2 c = back_end_.corrected(sample_anchor_[i], pose2(p.pose));
   return {p.t, mrpt::math::TPose3D(c.x, c.y, p.pose.z, c.theta, p.pose.pitch, p.pose.roll)};
 }
 
 void LoopClosingStage::sync() {
   const auto& front = tracker_.trajectory().poses();
-  std::size_t from = sample_keyframe_.size();
+  std::size_t from = sample_anchor_.size();
   // The tracker replaces its last sample when a later one has the same time.
   if (from > 0 && from <= front.size() && !samePose(front[from - 1], corrected_front_last_)) {
     --from;
   }
-  const std::size_t kf = back_end_.empty() ? 0 : back_end_.newest();
-  sample_keyframe_.resize(front.size(), kf);
+  const ScanAnchor anchor = back_end_.anchor();
+  sample_anchor_.resize(front.size(), anchor);
   for (std::size_t i = from; i < front.size(); ++i) {
-    sample_keyframe_[i] = kf;
+    sample_anchor_[i] = anchor;
     const TimedPose c = correctedSample(i);
     corrected_.append(c.t, c.pose);
   }
@@ -74,15 +74,15 @@ void LoopClosingStage::sync() {
 
 void LoopClosingStage::onScan(double t, const mrpt::obs::CObservation2DRangeScan::Ptr& scan) {
   sync();
-  const std::size_t keyframes = back_end_.keyframes().size();
+  const ScanAnchor before = back_end_.anchor();
   const bool closed =
       back_end_.addScan(t, pose2(tracker_.currentPose()), scanPointsInRobotFrame(*scan));
-  if (back_end_.keyframes().size() > keyframes) {
-    if (!sample_keyframe_.empty()) {
-      sample_keyframe_.back() = back_end_.newest();  // this scan's sample: the keyframe itself
-      const TimedPose c = correctedSample(sample_keyframe_.size() - 1);
-      corrected_.append(c.t, c.pose);
-    }
+  // A new keyframe or a refined scan: this scan's sample is the new anchor.
+  const ScanAnchor& after = back_end_.anchor();
+  if (after.scan != before.scan && !sample_anchor_.empty()) {
+    sample_anchor_.back() = after;
+    const TimedPose c = correctedSample(sample_anchor_.size() - 1);
+    corrected_.append(c.t, c.pose);
   }
   if (closed) {
     recomputeAll();
@@ -99,7 +99,7 @@ void LoopClosingStage::finish() {
 void LoopClosingStage::recomputeAll() {
   ++corrections_;
   corrected_ = Trajectory();
-  for (std::size_t i = 0; i < sample_keyframe_.size(); ++i) {
+  for (std::size_t i = 0; i < sample_anchor_.size(); ++i) {
     const TimedPose c = correctedSample(i);
     corrected_.append(c.t, c.pose);
   }

@@ -99,22 +99,65 @@ bool LoopClosingBackEnd::addScan(double t, const Pose2& front,
   }
   last_front_ = front;
   have_front_ = true;
-  if (!isKeyframe(front) || points.size() < 10) {
+  ++scans_;
+  if (points.size() < 10) {
+    return false;
+  }
+  if (!isKeyframe(front)) {
+    if (options_.refine_keyframes && options_.refine_scans) {
+      refineScan(points, front);
+    }
     return false;
   }
   addKeyframe(t, front, std::move(points));
   return options_.enabled && closeLoop();
 }
 
-Pose2 LoopClosingBackEnd::corrected(std::size_t keyframe, const Pose2& front) const {
-  const Keyframe& k = keyframes_[keyframe];
-  return compose(graph_.node(keyframe), between(k.front, front));
+Pose2 LoopClosingBackEnd::corrected(const ScanAnchor& anchor, const Pose2& front) const {
+  return compose(compose(graph_.node(anchor.keyframe), anchor.in_keyframe),
+                 between(anchor.front, front));
+}
+
+// A scan between keyframes: refined against the same line map as the next
+// keyframe's edge, started from the last anchor moved by the front end's
+// motion since, held to the front end's pose relative to the keyframe (a
+// prior relative to the last anchor instead lets errors add up from scan
+// to scan: doc/poses.md); if refined, it is the new anchor.
+void LoopClosingBackEnd::refineScan(const std::vector<Eigen::Vector2d>& points,
+                                    const Pose2& front) {
+  if (keyframes_.empty()) {
+    return;
+  }
+  const Pose2 guess = compose(anchor_.in_keyframe, between(anchor_.front, front));
+  const Pose2& key_front = keyframes_[anchor_.keyframe].front;
+  const RefinedPose r = refinePose(recentMap(), points, guess, between(key_front, front),
+                                   odometryInformation(key_front, front), options_.refine);
+  if (r.refined) {
+    ++stats_.refined_scans;
+    anchor_ = {scans_, anchor_.keyframe, front, r.pose};
+  }
+}
+
+const LineMap& LoopClosingBackEnd::recentMap() {
+  if (!recent_map_) {
+    const std::size_t last = newest();
+    std::vector<Rays> map_scans;
+    for (std::size_t i = last + 1; i-- > 0;) {
+      if (keyframes_[last].path_m - keyframes_[i].path_m > options_.refine_map_path_m) {
+        break;
+      }
+      map_scans.push_back(inFrame(graph_.node(last), graph_.node(i), keyframes_[i].points));
+    }
+    recent_map_ = std::make_unique<LineMap>(map_scans, options_.refine);
+  }
+  return *recent_map_;
 }
 
 void LoopClosingBackEnd::addKeyframe(double t, const Pose2& front,
                                      std::vector<Eigen::Vector2d> points) {
   Keyframe k{t, front, path_m_, std::move(points)};
   const std::size_t id = keyframes_.size();
+  anchor_ = {scans_, id, front, Pose2{}};
   if (id == 0) {
     graph_.addNode(front);
     keyframes_.push_back(std::move(k));
@@ -134,24 +177,15 @@ void LoopClosingBackEnd::addKeyframe(double t, const Pose2& front,
   keyframes_.push_back(std::move(k));
   ++stats_.keyframes;
   graph_.addEdge(e);
+  recent_map_.reset();
 }
 
 // The edge from the newest keyframe to a new one whose points are `points`,
 // refined against the keyframes of the last refine_map_path_m of path
 // (placed with the graph's poses, in the newest keyframe's frame).
-bool LoopClosingBackEnd::refineEdge(const std::vector<Eigen::Vector2d>& points,
-                                    PoseEdge& edge) const {
-  const std::size_t last = newest();
-  std::vector<Rays> map_scans;
-  for (std::size_t i = last + 1; i-- > 0;) {
-    if (keyframes_[last].path_m - keyframes_[i].path_m > options_.refine_map_path_m) {
-      break;
-    }
-    map_scans.push_back(inFrame(graph_.node(last), graph_.node(i), keyframes_[i].points));
-  }
-  const LineMap map(map_scans, options_.refine);
+bool LoopClosingBackEnd::refineEdge(const std::vector<Eigen::Vector2d>& points, PoseEdge& edge) {
   const RefinedPose r =
-      refinePose(map, points, edge.measurement, edge.information, options_.refine);
+      refinePose(recentMap(), points, edge.measurement, edge.information, options_.refine);
   if (!r.refined) {
     return false;
   }
@@ -311,6 +345,7 @@ bool LoopClosingBackEnd::acceptAfterSolve(const PoseEdge& edge, const ScanMatch&
                        match.score, distance(before[k], graph_.node(k)), 1000.0 * solve_s});
   ++stats_.accepted;
   path_at_last_closure_ = path_m_;
+  recent_map_.reset();
   return true;
 }
 

@@ -167,6 +167,12 @@ Linearised linearise(const LineMap& map, const std::vector<Eigen::Vector2d>& que
 RefinedPose refinePose(const LineMap& map, const std::vector<Eigen::Vector2d>& query,
                        const Pose2& guess, const Eigen::Matrix3d& prior,
                        const ScanRefineOptions& options) {
+  return refinePose(map, query, guess, guess, prior, options);
+}
+
+RefinedPose refinePose(const LineMap& map, const std::vector<Eigen::Vector2d>& query,
+                       const Pose2& guess, const Pose2& prior_mean, const Eigen::Matrix3d& prior,
+                       const ScanRefineOptions& options) {
   RefinedPose out;
   out.pose = guess;
   out.information = prior;
@@ -176,7 +182,7 @@ RefinedPose refinePose(const LineMap& map, const std::vector<Eigen::Vector2d>& q
     if (l.matches < options.min_matches) {
       return out;  // the prior, unrefined
     }
-    const Eigen::Vector3d dx = difference(x, guess);
+    const Eigen::Vector3d dx = difference(x, prior_mean);
     const Eigen::Vector3d step = -(l.h + prior).ldlt().solve(l.g + prior * dx);
     if (!step.allFinite()) {
       return out;

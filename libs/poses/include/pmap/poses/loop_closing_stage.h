@@ -50,7 +50,7 @@ class LoopClosingStage {
 
   IcpPoseTracker& tracker_;
   LoopClosingBackEnd back_end_;
-  std::vector<std::size_t> sample_keyframe_;  ///< per sample of the tracker's trajectory
+  std::vector<ScanAnchor> sample_anchor_;  ///< per sample of the tracker's trajectory
   Trajectory corrected_;
   TimedPose corrected_front_last_;  ///< the tracker's last sample when last synced
   std::size_t corrections_ = 0;

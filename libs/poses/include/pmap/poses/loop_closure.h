@@ -28,6 +28,7 @@
 #include <cstddef>
 #include <deque>
 #include <future>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,7 @@
 #include "pmap/poses/loop_search.h"
 #include "pmap/poses/pose_graph.h"
 #include "pmap/poses/scan_matcher.h"
+#include "pmap/poses/scan_refiner.h"
 
 namespace pmap::poses {
 
@@ -44,6 +46,17 @@ struct Keyframe {
   Pose2 front;                          ///< the front end's pose (its own frame)
   double path_m = 0;                    ///< front-end path length up to here
   std::vector<Eigen::Vector2d> points;  ///< the pose laser's points, robot frame
+};
+
+/// Where the scans after a keyframe are placed: the last refined scan (or
+/// the keyframe itself), by its front-end pose and its refined pose in the
+/// keyframe's frame; a later front-end pose follows it with the front end's
+/// motion since.
+struct ScanAnchor {
+  std::size_t scan = 0;  ///< the back end's count of scans when this anchor was set
+  std::size_t keyframe = 0;
+  Pose2 front;        ///< the anchor's front-end pose
+  Pose2 in_keyframe;  ///< the anchor's pose in the keyframe's frame
 };
 
 /// One accepted loop closure.
@@ -61,6 +74,7 @@ struct LoopClosure {
 struct LoopClosureStats {
   std::size_t keyframes = 0;
   std::size_t refined_edges = 0;        ///< keyframe edges refined point-to-line
+  std::size_t refined_scans = 0;        ///< scans between keyframes refined the same way
   std::size_t candidates = 0;           ///< verified by a scan-to-submap match
   std::size_t rejected_match = 0;       ///< no pose of the window scored min_score
   std::size_t rejected_ambiguous = 0;   ///< another pose of the window scored nearly as well
@@ -83,8 +97,10 @@ class LoopClosingBackEnd {
   /// order. Returns true when one of their loop closures moved the graph.
   bool finish();
 
-  /// The world pose of a front-end pose taken while `keyframe` was the newest.
-  Pose2 corrected(std::size_t keyframe, const Pose2& front) const;
+  /// The world pose of a front-end pose taken after `anchor`.
+  Pose2 corrected(const ScanAnchor& anchor, const Pose2& front) const;
+  /// The newest anchor (the newest keyframe or a scan refined after it).
+  const ScanAnchor& anchor() const { return anchor_; }
   /// The newest keyframe's index; only meaningful once there is one.
   std::size_t newest() const { return keyframes_.size() - 1; }
   bool empty() const { return keyframes_.empty(); }
@@ -99,7 +115,9 @@ class LoopClosingBackEnd {
   bool isKeyframe(const Pose2& front) const;
   void addKeyframe(double t, const Pose2& front, std::vector<Eigen::Vector2d> points);
   Eigen::Matrix3d odometryInformation(const Pose2& from, const Pose2& to) const;
-  bool refineEdge(const std::vector<Eigen::Vector2d>& points, PoseEdge& edge) const;
+  bool refineEdge(const std::vector<Eigen::Vector2d>& points, PoseEdge& edge);
+  void refineScan(const std::vector<Eigen::Vector2d>& points, const Pose2& front);
+  const LineMap& recentMap();
   bool closeLoop();
   std::vector<std::size_t> candidates(double radius) const;
   std::vector<Rays> scansAround(std::size_t centre, double half_path_m, bool optimised,
@@ -123,6 +141,11 @@ class LoopClosingBackEnd {
   /// first, each to be applied search_latency_keyframes after its keyframe.
   /// A std::async future waits for its thread when destroyed.
   std::deque<std::future<LoopSearchResult>> pending_;
+  ScanAnchor anchor_;
+  std::size_t scans_ = 0;
+  /// The keyframes of the last refine_map_path_m in the newest one's frame,
+  /// built when first needed after a keyframe or a closure.
+  std::unique_ptr<LineMap> recent_map_;
 };
 
 }  // namespace pmap::poses

@@ -89,8 +89,13 @@ struct RefinedPose {
 };
 
 /// The pose of the scan `query` (points in its own frame) in `map`'s frame,
-/// started from `guess` with information `prior` (symmetric positive
-/// definite). Deterministic.
+/// started from `guess`, held to `prior_mean` with information `prior`
+/// (symmetric positive definite). Deterministic.
+RefinedPose refinePose(const LineMap& map, const std::vector<Eigen::Vector2d>& query,
+                       const Pose2& guess, const Pose2& prior_mean, const Eigen::Matrix3d& prior,
+                       const ScanRefineOptions& options);
+
+/// The same with the prior centred on the start.
 RefinedPose refinePose(const LineMap& map, const std::vector<Eigen::Vector2d>& query,
                        const Pose2& guess, const Eigen::Matrix3d& prior,
                        const ScanRefineOptions& options);
