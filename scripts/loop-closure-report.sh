@@ -134,13 +134,13 @@ width); the others use \`pose_laser_aperture_deg = 180\` from
 $grids
 
 What the pictures showed when this page was last looked at (2026-12-03,
-with refined keyframe edges): ACES is the building's grid of corridors
+with refined keyframe edges and scans): ACES is the building's grid of corridors
 with thin single walls; no doubled wall is visible. MIT CSAIL holds together
 as a building; the walls of the central rectangular block are single lines
 now (they were doubled, a few decimetres apart, before the keyframe edges
 were refined); the rooms at the upper right and the open areas carry many
 long max-range-ish rays, not double walls. Intel comes out as one building
-(683 of 1,737 candidates accepted; before the refinement 20 of 2,828, and
+(678 of 1,733 candidates accepted; before the refinement 20 of 2,828, and
 the ring corridor was several overlapping copies): the outer ring and rooms
 are single, but the two long inner corridor walls come out bowed, as arcs,
 where the real ones are straight: heading drift the loops did not take out

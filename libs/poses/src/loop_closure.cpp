@@ -125,7 +125,11 @@ Pose2 LoopClosingBackEnd::corrected(const ScanAnchor& anchor, const Pose2& front
 // to scan: doc/poses.md); if refined, it is the new anchor.
 void LoopClosingBackEnd::refineScan(const std::vector<Eigen::Vector2d>& points,
                                     const Pose2& front) {
-  if (keyframes_.empty()) {
+  // Not against the first keyframe's scan alone: at 5 cm range noise the
+  // scans after it were pulled back towards it, 0.6 m in 1.2 s (measured
+  // on the default world, doc/poses.md); from two keyframes on they were
+  // not, and at 2 cm noise and on ACES it made no difference.
+  if (keyframes_.size() < 2) {
     return;
   }
   const Pose2 guess = compose(anchor_.in_keyframe, between(anchor_.front, front));
