@@ -178,6 +178,7 @@ TEST(LoopClosure, DisabledChangesNothing) {
   const Drive r = drive(ringWorld(), ringPath(1), 0.05, off);
   EXPECT_EQ(r.stats.candidates, 0u);
   EXPECT_EQ(r.stats.refined_edges, 0u);
+  EXPECT_EQ(r.stats.refined_scans, 0u);
   EXPECT_NEAR(r.corrected_error_m, r.front_error_m, 1e-9);
 }
 
@@ -187,9 +188,11 @@ TEST(LoopClosure, DisabledChangesNothing) {
 TEST(LoopClosure, RefinedKeyframeEdgesAloneReduceABiasedDrift) {
   LoopClosureOptions chain;
   chain.refine_keyframes = true;
+  chain.refine_scans = false;  // the last pose follows its keyframe
   const Drive r = drive(ringWorld(), ringPath(1), 0.05, chain);
   EXPECT_EQ(r.stats.candidates, 0u);
   EXPECT_GT(r.stats.refined_edges, 0u);
+  EXPECT_EQ(r.stats.refined_scans, 0u);
   EXPECT_LT(r.corrected_error_m, r.front_error_m);
 }
 
@@ -240,6 +243,23 @@ TEST(LoopClosure, RefinedScansTakeOutTheFrontEndsJitter) {
   EXPECT_GE(on_stats.refined_scans, 0.95 * static_cast<double>(path.size() - on_stats.keyframes));
   EXPECT_LT(on, 0.5 * off) << "keyframes only " << off << " m, every scan " << on << " m";
   std::printf("step error: keyframes only %.4f m, every scan %.4f m\n", off, on);
+}
+
+// Odometry samples (or scans with too few points) that come before the
+// first keyframe carry the default anchor; they follow the first keyframe
+// with the front end's motion, wherever the front end's frame starts.
+TEST(LoopClosure, PosesBeforeTheFirstKeyframeFollowIt) {
+  LoopClosingBackEnd back_end(LoopClosureOptions{});
+  std::mt19937 rng(3);
+  const Pose2 first{5.0, -3.0, 0.7};
+  back_end.addScan(0.1, first, scan(ringWorld(), {1, 1, 0}, rng));
+  ASSERT_FALSE(back_end.empty());
+  const Pose2 before = compose(first, Pose2{-0.1, 0.02, -0.01});  // 10 cm behind
+  const Pose2 c = back_end.corrected(ScanAnchor{}, before);
+  const Pose2 expected = compose(back_end.graph().node(0), between(first, before));
+  EXPECT_NEAR(c.x, expected.x, 1e-12);
+  EXPECT_NEAR(c.y, expected.y, 1e-12);
+  EXPECT_NEAR(c.theta, expected.theta, 1e-12);
 }
 
 // A long bare corridor driven there and back: every place looks like every

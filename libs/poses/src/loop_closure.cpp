@@ -114,6 +114,9 @@ bool LoopClosingBackEnd::addScan(double t, const Pose2& front,
 }
 
 Pose2 LoopClosingBackEnd::corrected(const ScanAnchor& anchor, const Pose2& front) const {
+  if (anchor.scan == 0) {  // taken before the first keyframe: it follows that one
+    return compose(graph_.node(0), between(keyframes_.front().front, front));
+  }
   return compose(compose(graph_.node(anchor.keyframe), anchor.in_keyframe),
                  between(anchor.front, front));
 }

@@ -2,8 +2,10 @@
 // front end (MRPT's CMetricMapBuilderICP) runs as without loop closure, in
 // its own drifting frame; every pose-laser scan goes to the pose graph back
 // end (loop_closure.h), and the trajectory handed on is the corrected one:
-// each front-end pose follows the newest keyframe at its time,
-//   corrected = keyframe's optimised pose (+) (keyframe's front pose^-1 (+) front pose).
+// each front-end pose follows the newest anchor at its time (ScanAnchor:
+// the newest keyframe or the last scan refined after it),
+//   corrected = keyframe's optimised pose (+) anchor's refined pose in the
+//               keyframe's frame (+) (anchor's front pose^-1 (+) front pose).
 // The front end's own map is left alone after a closure: rebuilding it from
 // the optimised keyframes (tried) makes the ICP snap to the moved map, and
 // the snap enters the next odometry edges as motion that never happened

@@ -97,7 +97,9 @@ class LoopClosingBackEnd {
   /// order. Returns true when one of their loop closures moved the graph.
   bool finish();
 
-  /// The world pose of a front-end pose taken after `anchor`.
+  /// The world pose of a front-end pose taken after `anchor` (the default
+  /// anchor, scan 0, stands for "before the first keyframe"); only
+  /// meaningful once there is a keyframe.
   Pose2 corrected(const ScanAnchor& anchor, const Pose2& front) const;
   /// The newest anchor (the newest keyframe or a scan refined after it).
   const ScanAnchor& anchor() const { return anchor_; }

@@ -59,8 +59,9 @@ struct LoopClosureOptions {
   /// graph's poses (scan_refiner.h); its information from that match.
   bool refine_keyframes = true;
   double refine_map_path_m = 5.0;
-  /// Every pose-laser scan between keyframes refined the same way (held to
-  /// the front end's pose relative to the keyframe).
+  /// With refine_keyframes: every pose-laser scan between keyframes, from
+  /// the second keyframe on, refined the same way (held to the front end's
+  /// pose relative to the keyframe).
   bool refine_scans = true;
   ScanRefineOptions refine;
   bool validate(std::string* why) const;
