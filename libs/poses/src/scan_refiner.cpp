@@ -127,10 +127,6 @@ Eigen::Vector3d difference(const Pose2& a, const Pose2& b) {
   return {a.x - b.x, a.y - b.y, wrapAngle(a.theta - b.theta)};
 }
 
-}  // namespace
-
-namespace {
-
 // The point-to-line normal equations at pose x: H = sum w J^T J / sigma^2,
 // g = sum w r J / sigma^2 (Huber weights w, IRLS).
 struct Linearised {
