@@ -86,4 +86,14 @@ function(pmap_add_gtest name)
     list(APPEND props FIXTURES_REQUIRED "${ARG_FIXTURES}")
   endif()
   gtest_discover_tests(${name} TEST_PREFIX "${name}." DISCOVERY_TIMEOUT 60 PROPERTIES ${props})
+  pmap_note_sanitized_test(${name} "${ARG_LABELS}")
+endfunction()
+
+# Test executables whose tests scripts/sanitize-tests.sh runs (labels unit or
+# robustness) are collected here; the target `sanitized-tests` (tests/
+# CMakeLists.txt) builds only them and the apps, not the end-to-end suites.
+function(pmap_note_sanitized_test name labels)
+  if(labels MATCHES "(^|;)(unit|robustness)(;|$)")
+    set_property(GLOBAL APPEND PROPERTY PMAP_SANITIZED_TESTS ${name})
+  endif()
 endfunction()

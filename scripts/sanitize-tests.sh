@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Builds everything with AddressSanitizer + UndefinedBehaviorSanitizer (+
-# float-cast-overflow; -DPMAP_SANITIZE=ON) in ./build-asan (or
-# $ASAN_BUILD_DIR) and runs the unit and robustness tests there (ctest -L
-# 'unit|robustness'; the
-# end-to-end tests on simulated worlds, real data, the browser and the GUI
+# Builds the unit and robustness test executables and the three apps with
+# AddressSanitizer + UndefinedBehaviorSanitizer (+ float-cast-overflow;
+# -DPMAP_SANITIZE=ON; CMake target `sanitized-tests`) in ./build-asan (or
+# $ASAN_BUILD_DIR) and runs those tests there (ctest -L 'unit|robustness';
+# the end-to-end tests on simulated worlds, real data, the browser and the GUI
 # are left to the ordinary build, doc/robustness.md). Every sanitizer report
 # aborts the program that made it, so its test fails, and so does this script.
 set -euo pipefail
@@ -13,7 +13,7 @@ jobs="${JOBS:-$(nproc)}"
 
 cmake -S . -B "$build_dir" -DPMAP_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1"
-cmake --build "$build_dir" -j"$jobs"
+cmake --build "$build_dir" -j"$jobs" --target sanitized-tests
 
 # Leaks inside third-party libraries only are suppressed (the file says which).
 # allocator_may_return_null: a huge malloc fails as it does without ASan
