@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang (-DPMAP_FUZZ=ON: fuzzer + ASan +
-# UBSan) in ./build-fuzz (or $FUZZ_BUILD_DIR) and runs each one for
+# UBSan) in ./build-fuzz (or $FUZZ_BUILD_DIR, e.g. build-asan after
+# scripts/sanitize-tests.sh) and runs each one for
 # $FUZZ_SECONDS seconds (default 60) from its committed corpus
 # (tests/fuzz/corpus/<target>, read only; new inputs go to
 # build-fuzz/corpus/<target>), with a memory cap. Prints the executions per
@@ -13,8 +14,13 @@ build_dir="${FUZZ_BUILD_DIR:-build-fuzz}"
 seconds="${FUZZ_SECONDS:-60}"
 targets=(rawlog_reader ini_loader plane_fit)
 
-cmake -S . -B "$build_dir" -DCMAKE_CXX_COMPILER=clang++ -DPMAP_FUZZ=ON -DPMAP_BUILD_TESTS=OFF \
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1"
+# A tree of scripts/sanitize-tests.sh (FUZZ_BUILD_DIR=build-asan) is reused
+# as it is: it was configured with PMAP_FUZZ=ON and the same compiler and
+# flags, and has the fuzz targets built.
+if ! grep -qs '^PMAP_FUZZ:BOOL=ON' "$build_dir/CMakeCache.txt"; then
+  cmake -S . -B "$build_dir" -DCMAKE_CXX_COMPILER=clang++ -DPMAP_FUZZ=ON -DPMAP_BUILD_TESTS=OFF \
+    -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1"
+fi
 cmake --build "$build_dir" -j"${JOBS:-$(nproc)}" --target "${targets[@]/#/fuzz_}"
 
 # As in scripts/sanitize-tests.sh: a huge malloc fails (OpenCV then throws

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "asan.h"
 #include "corruption.h"
 #include "pmap/common/error.h"
 #include "pmap/input/rawlog_reader.h"
@@ -223,7 +224,7 @@ TEST_P(LengthFields, HugeLengthFieldsKeepMemoryBounded) {
 // "Files larger than memory are streamed": one record at a time, so reading
 // a long rawlog leaves the peak memory where writing it left it.
 TEST(Streaming, PeakMemoryDoesNotGrowWithTheFile) {
-#if defined(__SANITIZE_ADDRESS__)
+#if PMAP_TEST_ASAN
   GTEST_SKIP() << "AddressSanitizer's quarantine keeps freed memory resident";
 #endif
   const fs::path dir = testing::freshTestDir("streaming");

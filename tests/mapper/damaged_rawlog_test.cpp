@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "app_runner.h"
+#include "asan.h"
 #include "bad_input_support.h"
 #include "corruption.h"
 #include "pmap/common/ply.h"
@@ -124,7 +125,7 @@ TEST(DamagedRawlog, ByteFlipsGiveExit2OrAValidMap) {
 // that follows the points, not the map's extent. planar-mapper runs as a
 // child process under a data limit, so a regression fails here instead of
 // exhausting the machine; its peak RSS (getrusage) is the measure.
-#if defined(__SANITIZE_ADDRESS__)
+#if PMAP_TEST_ASAN
 constexpr bool kSanitized = true;  // ASan reserves terabytes: no data limit
 #else
 constexpr bool kSanitized = false;
