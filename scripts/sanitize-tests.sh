@@ -14,6 +14,13 @@ cd "$(dirname "$0")/.."
 build_dir="${ASAN_BUILD_DIR:-build-asan}"
 jobs="${JOBS:-$(nproc)}"
 
+# A tree configured with another compiler (this script used gcc before
+# 2026-12-03) is started afresh: CMake cannot switch a configured tree.
+if [ -f "$build_dir/CMakeCache.txt" ] &&
+  ! grep -q '^CMAKE_CXX_COMPILER:[A-Z]*=.*clang++' "$build_dir/CMakeCache.txt"; then
+  echo "sanitize-tests: $build_dir was configured with another compiler: removing it" >&2
+  rm -rf "$build_dir"
+fi
 cmake -S . -B "$build_dir" -DCMAKE_CXX_COMPILER=clang++ -DPMAP_SANITIZE=ON -DPMAP_FUZZ=ON \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1"
 cmake --build "$build_dir" -j"$jobs" --target sanitized-tests fuzz_rawlog_reader fuzz_ini_loader \
