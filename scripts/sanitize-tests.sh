@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # Builds the unit and robustness test executables, the three apps and the
 # libFuzzer targets with clang, AddressSanitizer + UndefinedBehaviorSanitizer
-# (+ float-cast-overflow; -DPMAP_SANITIZE=ON -DPMAP_FUZZ=ON; CMake targets
-# `sanitized-tests` and `fuzz_*`) in ./build-asan (or $ASAN_BUILD_DIR), and
-# runs those tests there (ctest -L 'unit|robustness'; the end-to-end tests on
-# simulated worlds, real data, the browser and the GUI are left to the
-# ordinary build, doc/robustness.md). Every sanitizer report aborts the
-# program that made it, so its test fails, and so does this script. The same
-# tree serves scripts/fuzz.sh (FUZZ_BUILD_DIR=build-asan, as .ci/run does):
-# one instrumented build of the libraries instead of two.
+# (+ float-cast-overflow; -DPMAP_SANITIZE=ON -DPMAP_FUZZ=ON; CMake target
+# `sanitized-tests`, which includes the fuzz targets) in ./build-asan (or
+# $ASAN_BUILD_DIR), and runs those tests there (ctest -L 'unit|robustness';
+# the end-to-end tests on simulated worlds, real data, the browser and the
+# GUI are left to the ordinary build, doc/robustness.md). Every sanitizer
+# report aborts the program that made it, so its test fails, and so does
+# this script. The same tree serves scripts/fuzz.sh (FUZZ_BUILD_DIR=
+# build-asan, as .ci/run does): one instrumented build of the libraries
+# instead of two.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir="${ASAN_BUILD_DIR:-build-asan}"
@@ -23,8 +24,7 @@ if [ -f "$build_dir/CMakeCache.txt" ] &&
 fi
 cmake -S . -B "$build_dir" -DCMAKE_CXX_COMPILER=clang++ -DPMAP_SANITIZE=ON -DPMAP_FUZZ=ON \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1"
-cmake --build "$build_dir" -j"$jobs" --target sanitized-tests fuzz_rawlog_reader fuzz_ini_loader \
-  fuzz_plane_fit
+cmake --build "$build_dir" -j"$jobs" --target sanitized-tests
 
 # Leaks inside third-party libraries only are suppressed (the file says which).
 # allocator_may_return_null: a huge malloc fails as it does without ASan
