@@ -103,5 +103,52 @@ TEST(OfflineEm, SameInputAndSeedGiveTheSameMap) {
   }
 }
 
+// config/default.ini with [Poses] plane_refinement on, in `dir`.
+fs::path planesConfig(const fs::path& dir) {
+  const fs::path config = fs::path(PMAP_SOURCE_DIR) / "config";
+  std::ifstream in(config / "default.ini");
+  std::string text(std::istreambuf_iterator<char>(in), {});
+  const std::string key = "\nloop_closure = true";
+  const std::size_t at = text.find(key);
+  EXPECT_NE(at, std::string::npos);
+  text.insert(at + key.size(), "\nplane_refinement = true\n#");
+  fs::copy_file(config / "icp.ini", dir / "icp.ini", fs::copy_options::overwrite_existing);
+  std::ofstream(dir / "planes.ini") << text;
+  return dir / "planes.ini";
+}
+
+// Planes correct poses (issue 15 item 5) on true poses: the fit runs, keeps
+// them (the default priors let it move a knot a few centimetres at most)
+// and the map stays complete.
+TEST(OfflineEm, PlaneRefinementKeepsTruePosesAndTheMap) {
+  const fs::path config = planesConfig(testing::freshTestDir("offline_planes_config"));
+  const MappedRun r = mapOffline("default-obs", "offline_planes", {"--config", config.string()});
+  const json& rounds = r.summary["poses"]["plane_refinement"];
+  ASSERT_EQ(rounds.size(), 1u);
+  EXPECT_TRUE(rounds[0]["ran"].get<bool>());
+  EXPECT_EQ(rounds[0]["termination"], "CONVERGENCE");
+  EXPECT_GE(rounds[0]["surfaces"].get<int>(), 4);  // at least the corridor's walls
+  EXPECT_GT(rounds[0]["residuals"].get<int>(), 1000);
+  EXPECT_LE(rounds[0]["max_shift_m"].get<double>(), 0.05);
+  EXPECT_LE(r.eval["pose_ate_m"].get<double>(), 0.01);
+  expectEveryEligibleSurfaceMatched(r.eval);
+}
+
+TEST(OfflineEm, PlaneRefinementInAnOnlineRunIsAWarning) {
+  const fs::path config = planesConfig(testing::freshTestDir("online_planes_config"));
+  const fs::path out = testing::freshTestDir("online_planes");
+  ASSERT_EQ(testing::runMain(
+                &planarMapperMain, "planar-mapper",
+                {"--config", config.string(), "--rawlog", (kSim / "default-obs.rawlog").string(),
+                 "--poses", (kSim / "default-obs.poses.txt").string(), "--no-textures", "--out",
+                 out.string(), "-q"}),
+            0);
+  std::ifstream in(out / "summary.json");
+  const json s = json::parse(in);
+  EXPECT_FALSE(s["poses"].contains("plane_refinement"));
+  ASSERT_EQ(s["warnings"].size(), 1u) << s["warnings"].dump();
+  EXPECT_NE(s["warnings"][0].get<std::string>().find("plane_refinement"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace pmap::mapper

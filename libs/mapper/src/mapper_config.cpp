@@ -107,6 +107,19 @@ void PosesSection::load(config::SectionReader& r) {
   r.read("keyframe_refine_sigma_m", l.refine.sigma_m);
   r.read("keyframe_refine_max_distance_m", l.refine.max_distance_m);
   r.read("keyframe_refine_information_scale", l.refine.information_scale);
+  refine::PlanePoseOptions& p = planes;
+  r.read("plane_refinement", p.enabled);
+  r.read("plane_refine_knot_spacing_m", p.knot_spacing_m);
+  r.read("plane_refine_sigma_m", p.sigma_m);
+  r.read("plane_refine_motion_sigma_m_per_m", p.motion_sigma_m_per_m);
+  r.read("plane_refine_motion_sigma_deg_per_m", p.motion_sigma_deg_per_m);
+  r.read("plane_refine_max_normal_z", p.max_normal_z);
+  r.read("plane_refine_absolute_sigma_m", p.absolute_sigma_m);
+  r.read("plane_refine_absolute_sigma_deg", p.absolute_sigma_deg);
+  r.read("plane_refine_points_per_scan_surface", p.points_per_scan_surface);
+  r.read("plane_refine_huber_sigmas", p.huber_sigmas);
+  r.read("plane_refine_rounds", p.rounds);
+  r.read("plane_refine_max_iterations", p.max_iterations);
 }
 
 void OutputOptions::load(config::SectionReader& reader) {
@@ -260,6 +273,7 @@ MapperConfig loadMapperConfig(const std::filesystem::path& path) {
                    {},
                    {},
                    {},
+                   {},
                    {}};
   std::vector<std::string> errors;
   rejectUnknownSections(cfg.doc, errors);
@@ -268,6 +282,7 @@ MapperConfig loadMapperConfig(const std::filesystem::path& path) {
   loadSection(cfg, "Poses", poses, errors);
   cfg.motion = poses.motion;
   cfg.loops = poses.loops;
+  cfg.plane_poses = poses.planes;
   loadSection(cfg, "Output", cfg.output, errors);
   loadSection(cfg, "PlanarEM", cfg.planar_em, errors);
   OnlineEmSection online;

@@ -279,6 +279,19 @@ json summaryJson(const MapperArgs& args, const MappingResult& r, const StageCloc
       s["poses"]["loop_closure"]["online_repairs"] = repairSummary(r.planar->repairs);
     }
   }
+  for (const refine::PlanePoseResult& p : poses.plane_rounds) {
+    s["poses"]["plane_refinement"].push_back({{"ran", p.ran},
+                                              {"knots", p.knots},
+                                              {"surfaces", p.surfaces},
+                                              {"residuals", p.residuals},
+                                              {"iterations", p.iterations},
+                                              {"initial_cost", p.initial_cost},
+                                              {"final_cost", p.final_cost},
+                                              {"max_shift_m", p.max_shift_m},
+                                              {"max_turn_deg", p.max_turn_deg},
+                                              {"seconds", p.seconds},
+                                              {"termination", p.termination}});
+  }
   if (poses.laser_maps) {
     const poses::GridInfo& g = poses.laser_maps->info;
     s["poses"]["grid"] = {{"resolution_m", g.resolution_m},

@@ -81,6 +81,51 @@ void runRefinement(const MapperConfig& config, const MapperArgs& args,
   progress.finish(planar.refine->message);
 }
 
+// Planes correct poses (plane_poses.h): each round fits the corrections to
+// the map's vertical surfaces, moves the scans and the trajectory, and maps
+// the moved points afresh (the offline EM and the refinement); the laser
+// grid follows the moved trajectory.
+void correctPosesWithPlanes(const MapperConfig& config, const MapperArgs& args, StageClock& clock,
+                            MappingResult& result, std::optional<points::NeighbourGraph>& graph) {
+  const refine::PlanePoseOptions& options = config.plane_poses;
+  const points::PointMap placed = result.points.map;  // as the pose stage placed them
+  const poses::Trajectory trajectory = result.poses.trajectory;
+  refine::PoseCorrection correction;
+  for (int round = 0; round < options.rounds; ++round) {
+    refine::PlanePoseResult fit;
+    {
+      auto in_poses = clock.enter(Stage::kPoses);
+      fit = refine::fitPosesToPlanes(placed, result.planar->map, options, correction);
+      if (fit.ran) {
+        correction = fit.correction;
+        result.points.map = placed;
+        result.poses.trajectory = trajectory;
+        refine::applyCorrection(correction, result.points.map, result.poses.trajectory);
+      }
+    }
+    const bool ran = fit.ran;
+    result.poses.plane_rounds.push_back(std::move(fit));
+    if (!ran) {
+      return;
+    }
+    {
+      auto in_em = clock.enter(Stage::kEm);
+      graph = graphOf(config, result);
+      result.planar = runOfflineEm(config, args, *graph, result.points.map);
+    }
+    if (config.refine.enabled && !args.no_refine) {
+      auto in_refine = clock.enter(Stage::kRefine);
+      runRefinement(config, args, *graph, result.points.map, *result.planar);
+    }
+  }
+  if (result.poses.laser_log && !result.poses.plane_rounds.empty() &&
+      result.poses.plane_rounds.front().ran) {
+    auto in_poses = clock.enter(Stage::kPoses);
+    result.poses.laser_maps = poses::buildLaserMaps(
+        *result.poses.laser_log, result.poses.trajectory, config.sensors.max_pose_gap_s);
+  }
+}
+
 // What runs after the points: the offline EM (also online's fallback for
 // unorganised clouds, which have no scan order), or nothing.
 RunKind kindAfterPoints(const MapperArgs& args, const MappingResult& result) {
@@ -116,6 +161,13 @@ MappingResult runPipeline(const MapperConfig& config, const MapperArgs& args, St
       graph = graphOf(config, result);
     }
     runRefinement(config, args, *graph, result.points.map, *result.planar);
+  }
+  if (result.kind == RunKind::kOffline && config.plane_poses.enabled &&
+      result.poses.source != PoseSource::kCloud && result.poses.source != PoseSource::kIdentity) {
+    correctPosesWithPlanes(config, args, clock, result, graph);
+  } else if (config.plane_poses.enabled && result.kind == RunKind::kOnline) {
+    result.warnings.push_back(
+        "[Poses] plane_refinement runs with --mode offline only: this online run did not use it");
   }
   noteNothingFound(args, result);
   return result;

@@ -229,6 +229,9 @@ class RawlogRun {
     result_.poses.trajectory = stage.trajectory();
     result_.poses.laser_maps =
         poses::buildLaserMaps(laser_log_, stage.trajectory(), config_.sensors.max_pose_gap_s);
+    if (config_.plane_poses.enabled && result_.poses.laser_maps) {
+      result_.poses.laser_log = std::move(laser_log_);  // planes may move the poses (pipeline.cpp)
+    }
     result_.poses.motion = stage.gate().stats();
     if (const poses::LoopClosingBackEnd* loops = stage.loops()) {
       result_.poses.loops = loops->stats();

@@ -18,6 +18,7 @@
 #include "pmap/poses/laser_maps.h"
 #include "pmap/poses/loop_closure.h"
 #include "pmap/poses/motion_gate.h"
+#include "pmap/refine/plane_pose_options.h"
 #include "pmap/refine/refine_options.h"
 #include "pmap/texture/texture_options.h"
 
@@ -32,8 +33,11 @@ namespace pmap::mapper {
 struct PosesSection {
   poses::MotionLimits motion;       ///< implausible motion (libs/poses motion_gate.h)
   poses::LoopClosureOptions loops;  ///< the pose graph (libs/poses loop_closure.h)
+  refine::PlanePoseOptions planes;  ///< planes correct poses (libs/refine plane_poses.h)
   void load(config::SectionReader& reader);
-  bool validate(std::string* why) const { return motion.validate(why) && loops.validate(why); }
+  bool validate(std::string* why) const {
+    return motion.validate(why) && loops.validate(why) && planes.validate(why);
+  }
 };
 
 /// [Output]
@@ -88,6 +92,7 @@ struct MapperConfig {
   em::OnlineEmOptions online_em;
   texture::TextureOptions texture;
   refine::RefineOptions refine;
+  refine::PlanePoseOptions plane_poses;
   /// Accepted but worth saying (MRPT application keys that were ignored).
   std::vector<std::string> warnings;
 };

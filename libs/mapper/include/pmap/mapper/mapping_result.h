@@ -24,6 +24,7 @@
 #include "pmap/poses/motion_gate.h"
 #include "pmap/poses/trajectory.h"
 #include "pmap/refine/map_refiner.h"
+#include "pmap/refine/plane_poses.h"
 
 namespace pmap::mapper {
 
@@ -79,6 +80,12 @@ struct PoseResult {
   /// The pose laser's grid and simple map from the final poses ([Output]
   /// laser_maps; absent with --poses FILE or without pose-laser scans).
   std::optional<poses::LaserMaps> laser_maps;
+  /// The pose-laser scans they were built from, kept only when a later stage
+  /// moves the poses ([Poses] plane_refinement) and rebuilds them.
+  std::optional<poses::LaserScanLog> laser_log;
+  /// Planes correct poses ([Poses] plane_refinement, offline mode): one
+  /// record per round, the trajectory and the points moved by each.
+  std::vector<refine::PlanePoseResult> plane_rounds;
   /// Wall time of the pose stage for each input step that carried a
   /// pose-laser scan (ms).
   std::vector<double> step_ms;
