@@ -14,21 +14,26 @@ std::uint64_t cellKey(std::int64_t c, std::int64_t r) {
   return (static_cast<std::uint64_t>(c) << 32) ^ (static_cast<std::uint64_t>(r) & 0xffffffffULL);
 }
 
-// Doubles a max-pooling window along one axis of a row-major grid: from the
-// max over [i, i + k) to the max over [i, i + 2k).
-std::vector<float> doubled(const std::vector<float>& g, int cols, int rows, int k, bool along_x) {
-  std::vector<float> out(g);
-  for (int r = 0; r < rows; ++r) {
-    for (int c = 0; c < cols; ++c) {
-      const int c2 = along_x ? c + k : c;
-      const int r2 = along_x ? r : r + k;
-      if (c2 < cols && r2 < rows) {
-        float& o = out[static_cast<std::size_t>(r) * cols + c];
-        o = std::max(o, g[static_cast<std::size_t>(r2) * cols + c2]);
+// Doubles a max-pooling window along one axis of a row-major grid, in
+// place: from the max over [i, i + k) to the max over [i, i + 2k). In
+// ascending order, g[i + k] is still the old value when g[i] is updated.
+void doubleInPlace(std::vector<float>& g, int cols, int rows, int k, bool along_x) {
+  if (along_x) {
+    for (int r = 0; r < rows; ++r) {
+      float* row = &g[static_cast<std::size_t>(r) * cols];
+      for (int c = 0; c + k < cols; ++c) {
+        row[c] = std::max(row[c], row[c + k]);
       }
     }
+    return;
   }
-  return out;
+  for (int r = 0; r + k < rows; ++r) {
+    float* row = &g[static_cast<std::size_t>(r) * cols];
+    const float* below = &g[static_cast<std::size_t>(r + k) * cols];
+    for (int c = 0; c < cols; ++c) {
+      row[c] = std::max(row[c], below[c]);
+    }
+  }
 }
 
 // The query points rotated by theta about the window's centre and placed at
@@ -141,10 +146,13 @@ void ScanMatcher::buildGrid(const std::vector<Eigen::Vector2d>& reference) {
       }
     }
   }
+  grid_.levels.reserve(static_cast<std::size_t>(options_.levels));
   for (int h = 1; h < options_.levels; ++h) {
     const int k = 1 << (h - 1);
-    grid_.levels.push_back(doubled(doubled(grid_.levels.back(), grid_.cols, grid_.rows, k, true),
-                                   grid_.cols, grid_.rows, k, false));
+    std::vector<float> next = grid_.levels.back();
+    doubleInPlace(next, grid_.cols, grid_.rows, k, true);
+    doubleInPlace(next, grid_.cols, grid_.rows, k, false);
+    grid_.levels.push_back(std::move(next));
   }
 }
 
