@@ -525,3 +525,58 @@ TEST(MapEvalApp, Item14_OutNeverReplacesAFileOfTheRun) {
 
 }  // namespace
 }  // namespace pmap::eval
+
+namespace pmap::eval {
+namespace {
+
+// --gt-octomap (issue 16 item 6): the world's wall written as the planar
+// map's map.glb, scored against a tree whose occupied voxels lie just behind
+// it; alone, beside --gt, and refused without either ground truth.
+TEST(MapEvalApp, Issue16_ScoresTheMapAgainstAnOctomapsOccupiedVoxels) {
+  MapEvalArgs args = writeWorld(world(), "voxel_gt");
+  products::MapModel m;
+  m.fine.vertices = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(10, 0, 3),
+                     Eigen::Vector3d(0, 0, 3)};
+  m.fine.triangles = {{0, 1, 2}, {0, 2, 3}};
+  products::writeMapGlb(args.map_dir / "map.glb", m, false);
+  octomap::OcTree tree(0.1);  // the wall's voxels: y in [-0.1, 0), x in [0, 10), z in [0, 3)
+  for (int i = 0; i < 100; ++i) {
+    for (int k = 0; k < 30; ++k) {
+      tree.updateNode(octomap::point3d(0.05f + 0.1f * i, -0.05f, 0.05f + 0.1f * k), true);
+    }
+  }
+  const fs::path bt = args.map_dir.parent_path() / "wall.bt";
+  ASSERT_TRUE(tree.writeBinary(bt.string()));
+
+  const AppRun alone = runMapEval(
+      {"--map", args.map_dir.string(), "--gt-octomap", bt.string(), "--out", args.out.string()});
+  ASSERT_EQ(alone.exit_code, 0) << alone.err;
+  json doc = json::parse(fileBytes(args.out));
+  EXPECT_FALSE(doc.contains("pose_ate_m"));
+  const json& v = doc["voxel_gt"];
+  EXPECT_EQ(v["occupied_voxels"], 3000);
+  EXPECT_DOUBLE_EQ(v["resolution_m"].get<double>(), 0.1);
+  EXPECT_LT(v["map_to_voxels"]["mean_m"].get<double>(), 1e-6);  // on the voxels' face
+  EXPECT_DOUBLE_EQ(v["coverage"].get<double>(), 1.0);           // centres 5 cm from the map
+
+  std::vector<std::string> both = cli(args);
+  both.insert(both.end(), {"--gt-octomap", bt.string()});
+  const AppRun with_gt = runMapEval(both);
+  ASSERT_EQ(with_gt.exit_code, 0) << with_gt.err;
+  doc = json::parse(fileBytes(args.out));
+  EXPECT_TRUE(doc.contains("pose_ate_m"));
+  EXPECT_EQ(doc["voxel_gt"]["occupied_voxels"], 3000);
+
+  const AppRun neither = runMapEval({"--map", args.map_dir.string(), "--out", args.out.string()});
+  EXPECT_EQ(neither.exit_code, 1);
+  expectOneErrorLine(neither, "--gt-octomap");
+  std::ofstream(args.map_dir.parent_path() / "text.bt") << "not a tree\n";
+  const AppRun bad =
+      runMapEval({"--map", args.map_dir.string(), "--gt-octomap",
+                  (args.map_dir.parent_path() / "text.bt").string(), "--out", args.out.string()});
+  EXPECT_EQ(bad.exit_code, 2);
+  expectOneErrorLine(bad, "not an OctoMap binary tree");
+}
+
+}  // namespace
+}  // namespace pmap::eval

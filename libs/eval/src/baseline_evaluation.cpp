@@ -62,9 +62,8 @@ BaselineInputs readBaselineInputs(const OutputFolder& folder) {
   in.planar = folder.has(L::kSurfacesCsv) && folder.has(L::kMapGlb);
   if (in.planar) {
     in.textured = folder.has(L::kTexturesCsv);
-    const char* geometry = in.textured ? L::kMapGeometryGlb : L::kMapGlb;
-    if (folder.has(geometry)) {
-      in.planar_geometry = readMesh(folder.file(geometry));
+    if (const auto geometry = planarGeometryFile(folder)) {
+      in.planar_geometry = readMesh(*geometry);
     }
     in.map_glb_bytes = static_cast<std::int64_t>(fs::file_size(folder.file(L::kMapGlb)));
   }
@@ -132,6 +131,18 @@ bool BaselineOptions::validate(std::string* why) const {
       return false;
   }
   return accuracy.validate(why);
+}
+
+std::optional<fs::path> planarGeometryFile(const OutputFolder& folder) {
+  using L = OutputLayout;
+  if (!folder.has(L::kSurfacesCsv) || !folder.has(L::kMapGlb)) {
+    return std::nullopt;
+  }
+  const char* geometry = folder.has(L::kTexturesCsv) ? L::kMapGeometryGlb : L::kMapGlb;
+  if (!folder.has(geometry)) {
+    return std::nullopt;
+  }
+  return folder.file(geometry);
 }
 
 std::vector<BaselineFile> addBaselineKeys(const OutputFolder& folder, const GroundTruth& gt,

@@ -11,6 +11,7 @@
 #include "pmap/config/command_line.h"
 #include "pmap/eval/baseline_evaluation.h"
 #include "pmap/eval/eval_outputs.h"
+#include "pmap/eval/glb_mesh.h"
 #include "pmap/eval/ground_truth.h"
 #include "pmap/eval/label_check.h"
 #include "pmap/eval/map_files.h"
@@ -19,6 +20,7 @@
 #include "pmap/eval/surface_files.h"
 #include "pmap/eval/surface_report.h"
 #include "pmap/eval/texture_quality.h"
+#include "pmap/eval/voxel_evaluation.h"
 #include "pmap/products/output_folder.h"
 #include "pmap/products/output_layout.h"
 
@@ -33,13 +35,19 @@ namespace {
 std::optional<MapEvalArgs> parseArgs(int argc, const char* const* argv) {
   TCLAP::CmdLine cmd(
       "map-eval: scores a planar-mapper output directory (poses.txt, points.ply, ...) against "
-      "the ground truth written by indoor-sim (PREFIX.gt.json). Exit codes: 0 ok, 1 usage, 2 "
-      "input data error, 4 output write error.",
+      "the ground truth written by indoor-sim (PREFIX.gt.json) and/or against the occupied "
+      "voxels of an OctoMap (.bt, --gt-octomap). Exit codes: 0 ok, 1 usage, 2 input data "
+      "error, 4 output write error.",
       ' ', "0.1.0");
   TCLAP::ValueArg<std::string> map("m", "map", "planar-mapper output directory", true, "", "DIR",
                                    cmd);
-  TCLAP::ValueArg<std::string> gt("g", "gt", "ground truth (indoor-sim PREFIX.gt.json)", true, "",
+  TCLAP::ValueArg<std::string> gt("g", "gt", "ground truth (indoor-sim PREFIX.gt.json)", false, "",
                                   "FILE", cmd);
+  TCLAP::ValueArg<std::string> gt_octomap(
+      "", "gt-octomap",
+      "ground truth as an OctoMap's occupied voxels (.bt); the map must be in the tree's frame "
+      "(with --gt, the pose alignment moves it there)",
+      false, "", "FILE.bt", cmd);
   TCLAP::ValueArg<std::string> out("o", "out",
                                    "evaluation output (default ./eval.json); the OctoMap baselines "
                                    "octomap_5cm.bt and octomap_10cm.bt are written beside it",
@@ -55,8 +63,13 @@ std::optional<MapEvalArgs> parseArgs(int argc, const char* const* argv) {
   if (!(shift.getValue() >= 0.0 && shift.getValue() <= 50.0)) {
     throw ConfigError("usage: --texture-max-shift-px must be in [0, 50]");
   }
-  return MapEvalArgs{map.getValue(), gt.getValue(), out.getValue(), quiet.getValue(),
-                     shift.getValue()};
+  if (gt.getValue().empty() && gt_octomap.getValue().empty()) {
+    throw ConfigError(
+        "usage: give --gt FILE (indoor-sim's ground truth), --gt-octomap FILE.bt, "
+        "or both");
+  }
+  return MapEvalArgs{map.getValue(),   gt.getValue(),    out.getValue(),
+                     quiet.getValue(), shift.getValue(), gt_octomap.getValue()};
 }
 
 json poseJson(const PoseErrors& e) {
@@ -142,6 +155,18 @@ void addTextureEvaluation(const MapEvalArgs& args, const OutputFolder& folder,
 
 /// The short report on stdout.
 void printReport(const json& doc) {
+  if (doc.contains("voxel_gt")) {
+    const json& v = doc["voxel_gt"];
+    std::printf(
+        "voxel ground truth (%zu voxels of %.3f m): map to voxels mean %.4f m, p95 %.4f m; "
+        "coverage %.4f (%.4f within the map's box)\n",
+        v["occupied_voxels"].get<std::size_t>(), v["resolution_m"].get<double>(),
+        v["map_to_voxels"]["mean_m"].get<double>(), v["map_to_voxels"]["p95_m"].get<double>(),
+        v["coverage"].get<double>(), v["coverage_in_map_box"].get<double>());
+  }
+  if (!doc.contains("pose_ate_m")) {
+    return;  // voxel ground truth only
+  }
   std::printf("pose_ate_m %.4f (first-pose aligned %.4f, %zu poses)\n",
               doc["pose_ate_m"].get<double>(),
               doc["pose"]["ate_first_pose_aligned_m"].get<double>(),
@@ -169,6 +194,24 @@ void printReport(const json& doc) {
   }
 }
 
+// `voxel_gt`: the planar map (moved by map_to_gt) against the occupied
+// voxels of --gt-octomap.
+void addVoxelEvaluation(const MapEvalArgs& args, const OutputFolder& folder,
+                        const Rigid2D& map_to_gt, json& doc) {
+  const VoxelOptions options;
+  const VoxelGroundTruth gt = readVoxelGroundTruth(args.gt_octomap, options);
+  const std::optional<fs::path> geometry = planarGeometryFile(folder);
+  if (!geometry) {
+    throw InputError(args.map_dir.string() +
+                     ": no planar map (surfaces.csv and map.glb) to score against --gt-octomap");
+  }
+  std::vector<Triangle3> triangles = readGlbTriangles(*geometry);
+  for (Triangle3& t : triangles) {
+    t = {map_to_gt.apply(t.a), map_to_gt.apply(t.b), map_to_gt.apply(t.c)};
+  }
+  doc["voxel_gt"] = voxelJson(voxelAccuracy(gt, triangles, options), gt, args.gt_octomap, options);
+}
+
 }  // namespace
 
 MapEvaluation runEvaluation(const MapEvalArgs& args) {
@@ -183,6 +226,12 @@ MapEvaluation runEvaluation(const MapEvalArgs& args) {
     ev.warnings.push_back(folder.warning());
   }
   folder.verify();
+  if (args.gt.empty()) {  // voxel ground truth only: no poses to compare, the map as it is
+    ev.doc["map"] = args.map_dir.string();
+    ev.doc["gt_octomap"] = args.gt_octomap.string();
+    addVoxelEvaluation(args, folder, Rigid2D{}, ev.doc);
+    return ev;
+  }
   const GroundTruth gt = readGroundTruth(args.gt);
   const fs::path poses_txt = folder.file(OutputLayout::kPosesTxt);
   const poses::Trajectory estimated = readMapPoses(poses_txt);
@@ -208,6 +257,10 @@ MapEvaluation runEvaluation(const MapEvalArgs& args) {
   if (points) {
     ev.files = addBaselineKeys(folder, gt, *points, pe.alignment, BaselineOptions{}, doc);
   }
+  if (!args.gt_octomap.empty()) {
+    doc["gt_octomap"] = args.gt_octomap.string();
+    addVoxelEvaluation(args, folder, pe.alignment, doc);
+  }
   return ev;
 }
 
@@ -223,7 +276,11 @@ int mapEvalMain(int argc, const char* const* argv) {
     }
     const std::vector<fs::path> outputs =
         outputPaths(args->out, BaselineOptions{}.octomap_resolutions_m);
-    checkOutputsSpareInputs(outputs, knownInputs(args->map_dir, args->gt));  // before any work
+    std::vector<fs::path> inputs = knownInputs(args->map_dir, args->gt);
+    if (!args->gt_octomap.empty()) {
+      inputs.push_back(args->gt_octomap);
+    }
+    checkOutputsSpareInputs(outputs, inputs);  // before any work
     checkOutputsSpareMapFiles(outputs, args->map_dir);
     MapEvaluation ev = runEvaluation(*args);
     for (const std::string& w : ev.warnings) {

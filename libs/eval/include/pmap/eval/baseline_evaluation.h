@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,10 @@ std::vector<BaselineFile> addBaselineKeys(const products::OutputFolder& map_fold
                                           const GroundTruth& gt, const MapPoints& points,
                                           const Rigid2D& map_to_gt, const BaselineOptions& options,
                                           nlohmann::json& doc);
+
+/// The file holding the planar map's geometry alone: map-geometry.glb when
+/// the map is textured, else map.glb; none without a planar map.
+std::optional<std::filesystem::path> planarGeometryFile(const products::OutputFolder& folder);
 
 /// A few lines for map-eval's report: each map's mean / p95 error and size.
 std::string baselineReportText(const nlohmann::json& doc);

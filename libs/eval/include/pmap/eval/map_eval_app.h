@@ -17,6 +17,9 @@ struct MapEvalArgs {
   std::filesystem::path out = "eval.json";
   bool quiet = false;
   double texture_max_shift_px = 2.0;  ///< poster texture registration search (texels)
+  /// --gt-octomap: occupied voxels as ground truth (voxel_evaluation.h);
+  /// `gt` may then be empty.
+  std::filesystem::path gt_octomap{};
 };
 
 /// A whole evaluation, before anything is written.
