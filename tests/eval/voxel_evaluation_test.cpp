@@ -89,7 +89,7 @@ TEST(VoxelAccuracy, AMapOnTheWallIsAccurateAndCoversIt) {
   EXPECT_DOUBLE_EQ(a.map_to_voxels.mean_m, 0.0);  // every sample inside a voxel
   EXPECT_DOUBLE_EQ(a.coverage, 1.0);
   EXPECT_EQ(a.voxels_in_map_box, 800u);
-  EXPECT_LT(a.voxels_to_map.mean_m, 1e-9);
+  EXPECT_LT(a.voxels_to_map.mean_m, 1e-6);  // OctoMap stores centres as floats
 }
 
 TEST(VoxelAccuracy, AShiftedPartialMapIsScoredByTheShiftAndItsShare) {
