@@ -198,6 +198,7 @@ void printReport(const json& doc) {
 // voxels of --gt-octomap.
 void addVoxelEvaluation(const MapEvalArgs& args, const OutputFolder& folder,
                         const Rigid2D& map_to_gt, json& doc) {
+  doc["gt_octomap"] = args.gt_octomap.string();
   const VoxelOptions options;
   const VoxelGroundTruth gt = readVoxelGroundTruth(args.gt_octomap, options);
   const std::optional<fs::path> geometry = planarGeometryFile(folder);
@@ -228,7 +229,6 @@ MapEvaluation runEvaluation(const MapEvalArgs& args) {
   folder.verify();
   if (args.gt.empty()) {  // voxel ground truth only: no poses to compare, the map as it is
     ev.doc["map"] = args.map_dir.string();
-    ev.doc["gt_octomap"] = args.gt_octomap.string();
     addVoxelEvaluation(args, folder, Rigid2D{}, ev.doc);
     return ev;
   }
@@ -258,7 +258,6 @@ MapEvaluation runEvaluation(const MapEvalArgs& args) {
     ev.files = addBaselineKeys(folder, gt, *points, pe.alignment, BaselineOptions{}, doc);
   }
   if (!args.gt_octomap.empty()) {
-    doc["gt_octomap"] = args.gt_octomap.string();
     addVoxelEvaluation(args, folder, pe.alignment, doc);
   }
   return ev;

@@ -81,6 +81,27 @@ void runRefinement(const MapperConfig& config, const MapperArgs& args,
   progress.finish(planar.refine->message);
 }
 
+// The offline EM over the points as they are placed now.
+void mapOffline(const MapperConfig& config, const MapperArgs& args, StageClock& clock,
+                MappingResult& result, std::optional<points::NeighbourGraph>& graph) {
+  auto in_em = clock.enter(Stage::kEm);
+  graph = graphOf(config, result);
+  result.planar = runOfflineEm(config, args, *graph, result.points.map);
+}
+
+// The refinement of the planar map (offline or online), unless turned off.
+void refineMap(const MapperConfig& config, const MapperArgs& args, StageClock& clock,
+               MappingResult& result, std::optional<points::NeighbourGraph>& graph) {
+  if (!result.planar || !config.refine.enabled || args.no_refine) {
+    return;
+  }
+  auto in_refine = clock.enter(Stage::kRefine);
+  if (!graph) {
+    graph = graphOf(config, result);
+  }
+  runRefinement(config, args, *graph, result.points.map, *result.planar);
+}
+
 // Planes correct poses (plane_poses.h): each round fits the corrections to
 // the map's vertical surfaces, moves the scans and the trajectory, and maps
 // the moved points afresh (the offline EM and the refinement); the laser
@@ -106,20 +127,12 @@ void correctPosesWithPlanes(const MapperConfig& config, const MapperArgs& args, 
     const bool ran = fit.ran;
     result.poses.plane_rounds.push_back(std::move(fit));
     if (!ran) {
-      return;
+      break;  // the last round's correction stands
     }
-    {
-      auto in_em = clock.enter(Stage::kEm);
-      graph = graphOf(config, result);
-      result.planar = runOfflineEm(config, args, *graph, result.points.map);
-    }
-    if (config.refine.enabled && !args.no_refine) {
-      auto in_refine = clock.enter(Stage::kRefine);
-      runRefinement(config, args, *graph, result.points.map, *result.planar);
-    }
+    mapOffline(config, args, clock, result, graph);
+    refineMap(config, args, clock, result, graph);
   }
-  if (result.poses.laser_log && !result.poses.plane_rounds.empty() &&
-      result.poses.plane_rounds.front().ran) {
+  if (result.poses.laser_log && !correction.empty()) {
     auto in_poses = clock.enter(Stage::kPoses);
     result.poses.laser_maps = poses::buildLaserMaps(
         *result.poses.laser_log, result.poses.trajectory, config.sensors.max_pose_gap_s);
@@ -151,17 +164,9 @@ MappingResult runPipeline(const MapperConfig& config, const MapperArgs& args, St
   result.kind = kindAfterPoints(args, result);
   std::optional<points::NeighbourGraph> graph;
   if (result.kind == RunKind::kOffline) {
-    auto in_em = clock.enter(Stage::kEm);
-    graph = graphOf(config, result);
-    result.planar = runOfflineEm(config, args, *graph, result.points.map);
+    mapOffline(config, args, clock, result, graph);
   }
-  if (result.planar && config.refine.enabled && !args.no_refine) {
-    auto in_refine = clock.enter(Stage::kRefine);
-    if (!graph) {
-      graph = graphOf(config, result);
-    }
-    runRefinement(config, args, *graph, result.points.map, *result.planar);
-  }
+  refineMap(config, args, clock, result, graph);
   if (result.kind == RunKind::kOffline && config.plane_poses.enabled &&
       result.poses.source != PoseSource::kCloud && result.poses.source != PoseSource::kIdentity) {
     correctPosesWithPlanes(config, args, clock, result, graph);

@@ -108,14 +108,14 @@ std::vector<Knot> placeKnots(const points::PointMap& map, const std::vector<std:
   return knots;
 }
 
-// The knot interval holding time t (k, alpha), t within the knots' span.
-std::pair<std::size_t, double> interval(const std::vector<Knot>& knots, double t) {
-  const auto it = std::upper_bound(knots.begin(), knots.end(), t,
-                                   [](double v, const Knot& k) { return v < k.t; });
-  std::size_t k1 = static_cast<std::size_t>(it - knots.begin());
-  k1 = std::clamp<std::size_t>(k1, 1, knots.size() - 1);
-  const double span = knots[k1].t - knots[k1 - 1].t;
-  const double alpha = span > 0 ? std::clamp((t - knots[k1 - 1].t) / span, 0.0, 1.0) : 1.0;
+// The interval of sorted times `t` (at least two) holding x: (k, alpha)
+// with x = (1 - alpha) t[k] + alpha t[k + 1]; alpha is held to [0, 1]
+// outside the span.
+std::pair<std::size_t, double> interval(const std::vector<double>& t, double x) {
+  std::size_t k1 = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), x) - t.begin());
+  k1 = std::clamp<std::size_t>(k1, 1, t.size() - 1);
+  const double span = t[k1] - t[k1 - 1];
+  const double alpha = span > 0 ? std::clamp((x - t[k1 - 1]) / span, 0.0, 1.0) : 1.0;
   return {k1 - 1, alpha};
 }
 
@@ -160,19 +160,11 @@ PoseCorrection::PoseCorrection(std::vector<double> t, std::vector<Eigen::Vector3
     : t_(std::move(t)), delta_(std::move(delta)) {}
 
 Eigen::Vector3d PoseCorrection::at(double t) const {
-  if (t_.empty()) {
-    return Eigen::Vector3d::Zero();
+  if (t_.size() < 2) {
+    return t_.empty() ? Eigen::Vector3d::Zero() : delta_.front();
   }
-  if (!(t > t_.front())) {
-    return delta_.front();
-  }
-  if (t >= t_.back()) {
-    return delta_.back();
-  }
-  const std::size_t k1 =
-      static_cast<std::size_t>(std::upper_bound(t_.begin(), t_.end(), t) - t_.begin());
-  const double a = (t - t_[k1 - 1]) / (t_[k1] - t_[k1 - 1]);
-  return (1.0 - a) * delta_[k1 - 1] + a * delta_[k1];
+  const auto [k, a] = interval(t_, t);
+  return (1.0 - a) * delta_[k] + a * delta_[k + 1];
 }
 
 mrpt::math::TPose3D PoseCorrection::apply(double t, const mrpt::math::TPose3D& pose) const {
@@ -204,8 +196,10 @@ PlanePoseResult fitPosesToPlanes(const points::PointMap& map, const em::PlanarMa
       planes[w] = {std::atan2(n.y(), n.x()), n.normalized().dot(r.centre.head<2>())};
     }
   }
+  std::vector<double> times;
   std::vector<Eigen::Vector3d> delta;
   for (const Knot& k : knots) {
+    times.push_back(k.t);
     delta.push_back(start.at(k.t));
   }
   ceres::Problem problem;
@@ -220,7 +214,7 @@ PlanePoseResult fitPosesToPlanes(const points::PointMap& map, const em::PlanarMa
         on[a].push_back(i);
       }
     }
-    const auto [k, alpha] = interval(knots, s.timestamp);
+    const auto [k, alpha] = interval(times, s.timestamp);
     for (const auto& [w, idx] : on) {
       const std::size_t take = std::min<std::size_t>(idx.size(), static_cast<std::size_t>(m));
       for (std::size_t j = 0; j < take; ++j) {
@@ -265,9 +259,7 @@ PlanePoseResult fitPosesToPlanes(const points::PointMap& map, const em::PlanarMa
     result.termination = "FAILURE: " + summary.message;
     return result;
   }
-  std::vector<double> times;
   for (std::size_t k = 0; k < knots.size(); ++k) {
-    times.push_back(knots[k].t);
     result.max_shift_m = std::max(result.max_shift_m, delta[k].head<2>().norm());
     result.max_turn_deg = std::max(result.max_turn_deg, mrpt::RAD2DEG(std::abs(delta[k].z())));
   }
