@@ -35,12 +35,18 @@ void expectCorridorPlanes(const EmResult& r, double max_deg, double max_offset_m
   }
 }
 
-TEST(OfflineEm, CorridorWithABinGivesItsThreePlanesAndTheBinStaysOutliers) {
-  testing::Cloud c;
+// The corridor and a bin of radius 25 cm in it; returns the bin's first point.
+std::size_t addCorridorWithABin(testing::Cloud& c) {
   std::mt19937_64 rng(1);
   testing::addCorridor(c, {}, rng, 0);
   const std::size_t bin_first = c.points.size();
   testing::addCylinder(c, {3.0, 1.0, 0.0}, 0.25, 0.8, 0.03, 0.02, rng, 1);
+  return bin_first;
+}
+
+TEST(OfflineEm, CorridorWithABinGivesItsThreePlanesAndTheBinStaysOutliers) {
+  testing::Cloud c;
+  const std::size_t bin_first = addCorridorWithABin(c);
   const EmResult r = run(c, PlanarEmOptions{});
   EXPECT_EQ(r.termination, Termination::kConverged) << r.message;
   ASSERT_EQ(r.map.surfaces.size(), 3u) << r.message;
@@ -159,6 +165,32 @@ TEST(OfflineEm, AnLShapedCeilingBecomesTwoRectangles) {
   }
   EXPECT_NEAR(area, 2 * 8 + 2 * 6, 1.5);  // the L's 28 m^2, little overlap
   EXPECT_GT(r.map.explained_fraction, 0.98);
+}
+
+// Coarse to fine (coarse_points): model selection on a 1,000-point sample of
+// the corridor, then E- and M-steps on all points: the same three planes,
+// the bin still outliers, and the history says which iterations ran on the
+// sample. Same input and seed, same map.
+TEST(OfflineEm, CoarseToFineFindsTheCorridorAndLeavesTheBin) {
+  testing::Cloud c;
+  const std::size_t bin_first = addCorridorWithABin(c);
+  ASSERT_GT(c.points.size(), 2000u);
+  PlanarEmOptions o;
+  o.coarse_points = 1000;
+  const EmResult r = run(c, o);
+  ASSERT_EQ(r.map.surfaces.size(), 3u) << r.message;
+  expectCorridorPlanes(r, 1.0, 0.01);
+  std::size_t bin_explained = 0;
+  for (std::size_t i = bin_first; i < c.points.size(); ++i) {
+    bin_explained += r.map.assignment[i] >= 0 ? 1 : 0;
+  }
+  EXPECT_LT(bin_explained, (c.points.size() - bin_first) / 10);
+  ASSERT_GT(r.history.size(), static_cast<std::size_t>(o.fine_iterations));
+  EXPECT_EQ(r.history.front().points, 1000u);
+  EXPECT_EQ(r.history.back().points, c.points.size());
+  EXPECT_LE(r.iterations, OfflineEm(o).iterationCap(c.points.size()));
+  const EmResult again = run(c, o);
+  EXPECT_EQ(again.map.assignment, r.map.assignment);
 }
 
 TEST(OfflineEm, EmptyInputHasNoPoints) {

@@ -68,6 +68,10 @@ TEST(PlanarEmOptions, EachBadValueIsRejectedWithItsName) {
       {"responsibility_tolerance", [](auto& o) { o.responsibility_tolerance = kNan; }},
       {"fine_max_edge_m", [](auto& o) { o.fine_max_edge_m = 0.0; }},
       {"fine_max_edge_m", [](auto& o) { o.fine_max_edge_m = kInf; }},
+      {"min_curvature_depth_m", [](auto& o) { o.min_curvature_depth_m = -0.01; }},
+      {"coarse_points", [](auto& o) { o.coarse_points = 500; }},
+      {"coarse_points", [](auto& o) { o.coarse_points = -1; }},
+      {"fine_iterations", [](auto& o) { o.fine_iterations = 0; }},
       {"threads", [](auto& o) { o.threads = 0; }},
       {"threads", [](auto& o) { o.threads = 257; }},
   };

@@ -172,5 +172,48 @@ TEST(Rectangle, PlaneFromPointsRejectsDegenerateTriples) {
   }
 }
 
+TEST(Rectangle, OverlapOfARectangleWithItselfIsItsArea) {
+  const Rectangle r = floorTile();
+  const Overlap o = overlapOf(r, r);
+  EXPECT_NEAR(o.area_m2, 8.0, 1e-12);
+  EXPECT_NEAR(o.max_separation_m, 0.0, 1e-12);
+}
+
+TEST(Rectangle, OverlapIsTheClippedProjection) {
+  const Rectangle a = floorTile();
+  Rectangle b = floorTile();
+  b.centre = {1.0, 0.5, 1.03};  // 3 cm above, shifted by half its width in u and v
+  b.offset = 1.03;
+  // Overlap: u in [-1, 2], v in [-0.5, 1]: 3 x 1.5.
+  const Overlap o = overlapOf(a, b);
+  EXPECT_NEAR(o.area_m2, 4.5, 1e-12);
+  EXPECT_NEAR(o.max_separation_m, 0.03, 1e-12);
+  // Side by side: no overlap.
+  b.centre = {5.0, 0.0, 1.0};
+  EXPECT_EQ(overlapOf(a, b).area_m2, 0.0);
+  // A square turned by 45 deg on the tile's centre: clipped to the tile.
+  Rectangle c = floorTile();
+  c.axis_u = Eigen::Vector3d(1, 1, 0).normalized();
+  c.half_u = c.half_v = 1.0;  // 2 x 2, corners at distance sqrt(2) along the axes
+  // Its corners at (+-1.414, 0) and (0, +-1.414); the tile cuts off the
+  // two tips beyond v = +-1: each a triangle of height 0.414, area 0.414^2.
+  const double tip = std::sqrt(2.0) - 1.0;
+  EXPECT_NEAR(overlapOf(a, c).area_m2, 4.0 - 2.0 * tip * tip, 1e-12);
+}
+
+TEST(Rectangle, OverlapSeparationGrowsWithTheTiltAcrossTheOverlap) {
+  const Rectangle a = floorTile();
+  Rectangle b = floorTile();
+  // Turned by 1 deg about the v axis through the centre: at u = +-2 the
+  // planes are 2 tan(1 deg) = 3.5 cm apart.
+  const double t = M_PI / 180.0;
+  b.normal = {-std::sin(t), 0, std::cos(t)};
+  b.axis_u = {std::cos(t), 0, std::sin(t)};
+  b.offset = b.normal.dot(b.centre);
+  const Overlap o = overlapOf(a, b);
+  EXPECT_NEAR(o.max_separation_m, 2.0 * std::sin(t), 1e-3);
+  EXPECT_NEAR(o.area_m2, 8.0 * std::cos(t), 1e-3);
+}
+
 }  // namespace
 }  // namespace pmap::em

@@ -97,6 +97,40 @@ TEST(SelectionPolicy, Item14_CheckSurfaceNamesWhatFails) {
   EXPECT_FALSE(fitValidSurface({bin.points, bin.rows}, allIndices(bin.points.size()), r, o, 60));
 }
 
+// Surfaces are opaque: two surfaces over the same place within the split
+// test's offset are one surface (fused whatever the likelihood says), while
+// a door 10 cm behind its wall, or a surface beside another, is not.
+TEST(SelectionPolicy, TwoSurfacesAtTheSamePlaceAreOne) {
+  PlanarEmOptions o;  // split_min_offset_m 4 cm
+  Rectangle wall;
+  wall.normal = {1, 0, 0};
+  wall.offset = 2.0;
+  wall.centre = {2, 0, 1};
+  wall.axis_u = {0, 1, 0};
+  wall.half_u = 2.0;
+  wall.half_v = 1.0;
+  Rectangle copy = wall;  // 2 cm in front of it, over half of it
+  copy.centre = {1.98, 1.0, 1};
+  copy.offset = 1.98;
+  copy.half_u = 1.0;
+  EXPECT_TRUE(sameSurfacePlace(wall, copy, o.split_min_offset_m, o));
+  EXPECT_TRUE(sameSurfacePlace(copy, wall, o.split_min_offset_m, o));
+  Rectangle door = copy;  // 10 cm behind it, in its rectangle
+  door.centre = {2.1, 1.0, 1};
+  door.offset = 2.1;
+  door.half_u = 0.45;
+  EXPECT_FALSE(sameSurfacePlace(wall, door, o.split_min_offset_m, o));
+  EXPECT_FALSE(sameSurfacePlace(wall, door, o.rules.same_place_clearance * o.split_min_offset_m,
+                                o));  // may be created
+  Rectangle beside = wall;            // the next wall along, no overlap
+  beside.centre = {2, 4.5, 1};
+  EXPECT_FALSE(sameSurfacePlace(wall, beside, o.split_min_offset_m, o));
+  Rectangle across = wall;  // the same place, at right angles: a corner
+  across.normal = {0, 1, 0};
+  across.axis_u = {1, 0, 0};
+  EXPECT_FALSE(sameSurfacePlace(wall, across, o.split_min_offset_m, o));
+}
+
 TEST(SelectionPolicy, Item14_EveryRuleIsValidated) {
   PlanarEmOptions o;
   std::string why;
@@ -113,6 +147,8 @@ TEST(SelectionPolicy, Item14_EveryRuleIsValidated) {
       [](SelectionRules& r) { r.residual_sigmas = 0; },
       [](SelectionRules& r) { r.corner_on_plane_percent = 101; },
       [](SelectionRules& r) { r.seed_attempts_per_surface = 0; },
+      [](SelectionRules& r) { r.same_place_overlap_percent = 0; },
+      [](SelectionRules& r) { r.same_place_clearance = 0.5; },
   };
   for (std::size_t k = 0; k < bad.size(); ++k) {
     PlanarEmOptions b;

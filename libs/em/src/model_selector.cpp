@@ -150,7 +150,8 @@ double ModelSelector::pairLikelihoodChange(const std::vector<Surface>& surfaces,
 }
 
 // Fusion of two surfaces that are the same plane (when that raises the log
-// posterior), or else their re-cut: coplanar neighbours forming an L are cut
+// posterior, or whatever it does when they occupy the same place:
+// sameSurfacePlace), or else their re-cut: coplanar neighbours forming an L are cut
 // again where the larger rectangle is largest (a canonical form: a wall or
 // ceiling runs through the corner), when that costs less than min_gain.
 std::optional<ModelSelector::PairChange> ModelSelector::pairChange(
@@ -170,7 +171,8 @@ std::optional<ModelSelector::PairChange> ModelSelector::pairChange(
   const double empty_before = empty(members[j], a) + empty(members[k], b);
   const double fuse_gain = posteriorGain(pairLikelihoodChange(surfaces, resp, j, k, {m}), -1,
                                          empty(both, m) - empty_before, options_);
-  if (raisesPosterior(fuse_gain, options_)) {
+  if (raisesPosterior(fuse_gain, options_) ||
+      sameSurfacePlace(a, b, options_.split_min_offset_m, options_)) {
     return PairChange{1e12 + fuse_gain, j, k, {m}};
   }
   const auto recut = recutPair(both, m, std::max(members[j].size(), members[k].size()));
@@ -357,9 +359,10 @@ std::vector<std::vector<std::vector<std::int32_t>>> ModelSelector::splitOptions(
 }
 
 std::vector<Rectangle> ModelSelector::bestSplit(
-    std::size_t j, const Surface& s, const std::vector<std::int32_t>& members,
+    const std::vector<Surface>& surfaces, std::size_t j, const std::vector<std::int32_t>& members,
     const std::vector<std::vector<std::vector<std::int32_t>>>& options,
     const Responsibilities& resp) const {
+  const Surface& s = surfaces[j];
   const auto old_near = pointsNear(grid_, points_, s.rect, cutoff_);
   const double old_empty = empty(members, s.rect);
   double best_gain = options_.min_gain;
@@ -393,8 +396,10 @@ std::vector<Rectangle> ModelSelector::bestSplit(
         logLikelihoodChange(points_, resp, model_, affected, {static_cast<std::int32_t>(j)},
                             settled, options_.responsibility_tolerance, options_.selection_scoring),
         static_cast<int>(settled.size()) - 1, empty_after - old_empty, options_);
-    if (gain > best_gain && std::none_of(settled.begin(), settled.end(),
-                                         [this](const Rectangle& r) { return isTabu(r); })) {
+    if (gain > best_gain &&
+        std::none_of(settled.begin(), settled.end(),
+                     [this](const Rectangle& r) { return isTabu(r); }) &&
+        !placeTaken(settled, surfaces, j)) {
       best_gain = gain;
       best = settled;
     }
@@ -410,7 +415,7 @@ int ModelSelector::splitSurfaces(std::vector<Surface>& surfaces, Responsibilitie
   int split = 0;
   for (std::size_t j = 0; j < J; ++j) {
     const std::vector<Rectangle> best =
-        bestSplit(j, surfaces[j], members[j], splitOptions(surfaces[j], members[j], resp, j), resp);
+        bestSplit(surfaces, j, members[j], splitOptions(surfaces[j], members[j], resp, j), resp);
     if (!best.empty()) {
       surfaces[j].rect = best[0];
       surfaces[j].id = next_id++;
@@ -452,7 +457,7 @@ int ModelSelector::seed(std::vector<Surface>& surfaces, const Responsibilities& 
         logLikelihoodChange(points_, resp, model_, pointsNear(grid_, points_, r, cutoff_), {}, {r},
                             options_.responsibility_tolerance, options_.selection_scoring),
         1, empty(s.members[k], r), options_);
-    if (raisesPosterior(gain, options_) && !isTabu(r)) {
+    if (raisesPosterior(gain, options_) && !isTabu(r) && !placeTaken({r}, surfaces, -1)) {
       surfaces.push_back({r, next_id++, static_cast<std::int32_t>(s.members[k].size())});
       ++added;
     }
@@ -476,6 +481,26 @@ int ModelSelector::fuse(std::vector<Surface>& surfaces, std::int32_t& next_id) {
 // last rules.tabu_rounds rounds may not be created again by a split or a
 // seed; a split that the next round's removal undoes would otherwise repeat
 // forever.
+bool ModelSelector::placeTaken(const std::vector<Rectangle>& parts,
+                               const std::vector<Surface>& surfaces,
+                               std::ptrdiff_t replaced) const {
+  const double clearance = options_.rules.same_place_clearance * options_.split_min_offset_m;
+  for (std::size_t a = 0; a < parts.size(); ++a) {
+    for (std::size_t b = a + 1; b < parts.size(); ++b) {
+      if (sameSurfacePlace(parts[a], parts[b], clearance, options_)) {
+        return true;
+      }
+    }
+    for (std::size_t k = 0; k < surfaces.size(); ++k) {
+      if (static_cast<std::ptrdiff_t>(k) != replaced &&
+          sameSurfacePlace(parts[a], surfaces[k].rect, clearance, options_)) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 bool ModelSelector::isTabu(const Rectangle& r) const {
   return std::any_of(tabu_.begin(), tabu_.end(),
                      [&](const auto& t) { return sameAsRemoved(r, t.second, options_); });

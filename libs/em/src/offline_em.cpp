@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "pmap/em/model_selection.h"
+#include "pmap/em/subsample.h"
 #include "pmap/em/surface_fit.h"
 
 namespace pmap::em {
@@ -78,6 +79,15 @@ PlanarMap finalizeMap(const std::vector<Eigen::Vector3d>& points, const Neighbou
   return map;
 }
 
+bool OfflineEm::coarseToFine(std::size_t points) const {
+  const auto coarse = static_cast<std::size_t>(options_.coarse_points);
+  return coarse > 0 && points > 2 * coarse;
+}
+
+int OfflineEm::iterationCap(std::size_t points) const {
+  return options_.max_iterations + (coarseToFine(points) ? options_.fine_iterations : 0);
+}
+
 EmResult OfflineEm::run(const std::vector<Eigen::Vector3d>& points, const Neighbours& neighbours,
                         const std::vector<std::int32_t>& rows,
                         std::vector<Surface> surfaces) const {
@@ -86,17 +96,54 @@ EmResult OfflineEm::run(const std::vector<Eigen::Vector3d>& points, const Neighb
     result.message = "no points";
     return result;
   }
+  if (coarseToFine(points.size())) {
+    // Model selection on a sample, then E- and M-steps on all points.
+    const Subsample sample = drawSubsample(
+        points, neighbours, rows, static_cast<std::size_t>(options_.coarse_points), options_.seed);
+    const PlanarEmOptions sampled = scaledToSample(options_, sample.fraction);
+    ModelSelector on_sample(sample.points, sample.neighbours, sample.rows, sampled);
+    iterate(sample.points, sample.neighbours, sampled, on_sample, true, surfaces, result);
+    const Termination on_the_sample = result.termination;
+    const int coarse_iterations = result.iterations;
+    PlanarEmOptions fine = options_;
+    fine.max_iterations = options_.fine_iterations;
+    ModelSelector on_all(points, neighbours, rows, options_);
+    iterate(points, neighbours, fine, on_all, false, surfaces, result);
+    result.termination = on_the_sample;              // the fine phase is capped by design
+    result.removed_on_all = on_all.prune(surfaces);  // the full data's verdict
+    result.map = finalizeMap(points, neighbours, std::move(surfaces), on_all, options_);
+    result.message = std::string(toString(result.termination)) + " after " +
+                     std::to_string(coarse_iterations) + " iterations on a sample of " +
+                     std::to_string(sample.points.size()) + " points, then " +
+                     std::to_string(result.iterations - coarse_iterations) + " on all, " +
+                     std::to_string(result.map.surfaces.size()) + " surfaces";
+    return result;
+  }
   ModelSelector selector(points, neighbours, rows, options_);
+  iterate(points, neighbours, options_, selector, true, surfaces, result);
+  result.map = finalizeMap(points, neighbours, std::move(surfaces), selector, options_);
+  result.message = std::string(toString(result.termination)) + " after " +
+                   std::to_string(result.iterations) + " iterations, " +
+                   std::to_string(result.map.surfaces.size()) + " surfaces";
+  return result;
+}
+
+void OfflineEm::iterate(const std::vector<Eigen::Vector3d>& points, const Neighbours& neighbours,
+                        const PlanarEmOptions& options, ModelSelector& selector,
+                        bool with_selection, std::vector<Surface>& surfaces,
+                        EmResult& result) const {
+  const bool select = options.model_selection && with_selection;
   std::int32_t next_id = nextFreeId(surfaces);
   Responsibilities resp;
   int patience = 0;
   bool last_round_quiet = false;
   double previous = std::nan("");
   result.termination = Termination::kMaxIterations;
-  for (int it = 0; it < options_.max_iterations; ++it) {
+  for (int it = 0; it < options.max_iterations; ++it) {
     IterationRecord rec;
-    rec.iteration = it;
-    if (options_.model_selection && it % options_.selection_interval == 0) {
+    rec.iteration = result.iterations;
+    rec.points = points.size();
+    if (select && it % options.selection_interval == 0) {
       rec.changes = selector.round(surfaces, next_id);
       last_round_quiet = !rec.changes.any() && it > 0;
       if (rec.changes.any()) {
@@ -108,33 +155,28 @@ EmResult OfflineEm::run(const std::vector<Eigen::Vector3d>& points, const Neighb
     rec.explained_fraction = explainedFraction(resp);
     rec.log_likelihood = resp.total_loglik;
     rec.log_posterior = logPosterior(
-        resp, surfaces, emptyAreas(points, resp, surfaces, options_.split_cell_m), options_);
+        resp, surfaces, emptyAreas(points, resp, surfaces, options.split_cell_m), options);
     result.history.push_back(rec);
-    result.iterations = it + 1;
+    result.iterations += 1;
     if (observer_) {
       observer_(rec);
     }
     const double change = std::abs(rec.log_posterior - previous);
-    const bool small = change < options_.convergence_tolerance * std::abs(previous) ||
-                       change < options_.convergence_absolute_nats;
+    const bool small = change < options.convergence_tolerance * std::abs(previous) ||
+                       change < options.convergence_absolute_nats;
     patience = small ? patience + 1 : 0;
     previous = rec.log_posterior;
-    const bool selection_settled = !options_.model_selection || last_round_quiet;
-    if (selection_settled && patience >= options_.convergence_patience) {
+    const bool selection_settled = !select || last_round_quiet;
+    if (selection_settled && patience >= options.convergence_patience) {
       result.termination = Termination::kConverged;
       break;
     }
-    maximizeSurfaces(points, neighbours, resp, options_.threads, surfaces,
-                     options_.rules.coherent_neighbours);  // eqs. (19)-(29)
+    maximizeSurfaces(points, neighbours, resp, options.threads, surfaces,
+                     options.rules.coherent_neighbours);  // eqs. (19)-(29)
   }
-  if (options_.model_selection && result.termination != Termination::kConverged) {
+  if (select && result.termination != Termination::kConverged) {
     selector.prune(surfaces);  // surfaces seeded in the last round were never re-checked
   }
-  result.map = finalizeMap(points, neighbours, std::move(surfaces), selector, options_);
-  result.message = std::string(toString(result.termination)) + " after " +
-                   std::to_string(result.iterations) + " iterations, " +
-                   std::to_string(result.map.surfaces.size()) + " surfaces";
-  return result;
 }
 
 }  // namespace pmap::em

@@ -41,6 +41,8 @@ bool PlanarEmOptions::validate(std::string* why) const {
     return fail(why, "min_gain must be >= 0");
   if (!positive(min_curvature_radius_m))
     return fail(why, "min_curvature_radius_m must be > 0");
+  if (!(std::isfinite(min_curvature_depth_m) && min_curvature_depth_m >= 0.0))
+    return fail(why, "min_curvature_depth_m must be >= 0");
   if (!(fuse_angle_deg > 0.0 && fuse_angle_deg < 90.0)) {
     return fail(why, "fuse_angle_deg must be in (0, 90)");
   }
@@ -67,12 +69,20 @@ bool PlanarEmOptions::validate(std::string* why) const {
   }
   if (!positive(fine_max_edge_m))
     return fail(why, "fine_max_edge_m must be > 0");
+  if (coarse_points != 0 && coarse_points < 1000)
+    return fail(why, "coarse_points must be 0 (off) or >= 1000");
+  if (fine_iterations < 1)
+    return fail(why, "fine_iterations must be >= 1");
   if (threads < 1 || threads > 256)
     return fail(why, "threads must be in [1, 256]");
   return rules.validate(why);
 }
 
 bool SelectionRules::validate(std::string* why) const {
+  if (same_place_overlap_percent < 1 || same_place_overlap_percent > 100)
+    return fail(why, "rules.same_place_overlap_percent must be in [1, 100]");
+  if (!(std::isfinite(same_place_clearance) && same_place_clearance >= 1.0))
+    return fail(why, "rules.same_place_clearance must be >= 1");
   if (!positive(grow_sigmas))
     return fail(why, "rules.grow_sigmas must be > 0");
   if (recut_min_growth_percent < 0 || recut_max_transfer_percent < 1 ||

@@ -45,14 +45,31 @@ Planarity measurePlanarity(const std::vector<Eigen::Vector3d>& points,
   Eigen::Matrix2d hessian;
   hessian << 2.0 * coef(0), coef(1), coef(1), 2.0 * coef(2);
   hessian /= scale * scale;
-  const double k =
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(hessian).eigenvalues().cwiseAbs().maxCoeff();
-  out.curvature_radius_m = k > 0.0 ? 1.0 / k : std::numeric_limits<double>::infinity();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(hessian);
+  Eigen::Index largest = 0;
+  const double k = eig.eigenvalues().cwiseAbs().maxCoeff(&largest);
+  if (!(k > 0.0)) {
+    return out;
+  }
+  out.curvature_radius_m = 1.0 / k;
+  // The members' extent along the most curved direction: the bend's chord.
+  const Eigen::Vector2d dir = eig.eigenvectors().col(largest);
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -lo;
+  for (const std::int32_t i : members) {
+    const Eigen::Vector3d d = points[static_cast<std::size_t>(i)] - rect.centre;
+    const double t = dir.x() * u.dot(d) + dir.y() * v.dot(d);
+    lo = std::min(lo, t);
+    hi = std::max(hi, t);
+  }
+  out.bend_depth_m = k * (hi - lo) * (hi - lo) / 8.0;
   return out;
 }
 
-bool isCurved(const Planarity& p, double min_radius_m, double min_variance_explained) {
-  return p.curvature_radius_m < min_radius_m && p.variance_explained >= min_variance_explained;
+bool isCurved(const Planarity& p, double min_radius_m, double min_depth_m,
+              double min_variance_explained) {
+  return p.curvature_radius_m < min_radius_m && p.bend_depth_m >= min_depth_m &&
+         p.variance_explained >= min_variance_explained;
 }
 
 }  // namespace pmap::em

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace pmap::em {
 
@@ -36,6 +37,71 @@ void Rectangle::reproject() {
     u = normal.unitOrthogonal();
   }
   axis_u = u.normalized();
+}
+
+namespace {
+
+using Polygon = std::vector<Eigen::Vector2d>;
+
+// Sutherland-Hodgman: the part of convex `poly` where coordinate `axis`
+// times `sign` is at most `limit`.
+Polygon clipHalfPlane(const Polygon& poly, int axis, double sign, double limit) {
+  Polygon out;
+  for (std::size_t k = 0; k < poly.size(); ++k) {
+    const Eigen::Vector2d& p = poly[k];
+    const Eigen::Vector2d& q = poly[(k + 1) % poly.size()];
+    const double fp = sign * p(axis) - limit;
+    const double fq = sign * q(axis) - limit;
+    if (fp <= 0.0) {
+      out.push_back(p);
+    }
+    if ((fp < 0.0 && fq > 0.0) || (fp > 0.0 && fq < 0.0)) {
+      out.push_back(p + (q - p) * (fp / (fp - fq)));
+    }
+  }
+  return out;
+}
+
+double polygonArea(const Polygon& poly) {
+  double twice = 0.0;
+  for (std::size_t k = 0; k < poly.size(); ++k) {
+    const Eigen::Vector2d& p = poly[k];
+    const Eigen::Vector2d& q = poly[(k + 1) % poly.size()];
+    twice += p.x() * q.y() - q.x() * p.y();
+  }
+  return 0.5 * std::abs(twice);
+}
+
+}  // namespace
+
+Overlap overlapOf(const Rectangle& a, const Rectangle& b) {
+  Overlap out;
+  if (!a.bounded || !b.bounded || a.area() <= 0.0 || b.area() <= 0.0) {
+    return out;
+  }
+  const Eigen::Vector3d v = a.axisV();
+  Polygon poly;
+  for (const Eigen::Vector3d& c : b.corners()) {
+    const Eigen::Vector3d d = c - a.centre;
+    poly.emplace_back(a.axis_u.dot(d), v.dot(d));
+  }
+  // b's projected corners form a parallelogram (convex); clip it to a's box.
+  for (int axis = 0; axis < 2 && !poly.empty(); ++axis) {
+    const double half = axis == 0 ? a.half_u : a.half_v;
+    poly = clipHalfPlane(poly, axis, 1.0, half);
+    if (!poly.empty()) {
+      poly = clipHalfPlane(poly, axis, -1.0, half);
+    }
+  }
+  if (poly.size() < 3) {
+    return out;
+  }
+  out.area_m2 = polygonArea(poly);
+  for (const Eigen::Vector2d& q : poly) {
+    const Eigen::Vector3d p = a.centre + a.axis_u * q.x() + v * q.y();
+    out.max_separation_m = std::max(out.max_separation_m, std::abs(b.planeDistance(p)));
+  }
+  return out;
 }
 
 bool planeFromPoints(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,

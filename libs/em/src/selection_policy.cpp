@@ -32,7 +32,7 @@ bool seenByEnoughRows(const Measurements& z, const std::vector<std::int32_t>& me
 bool curvedSurface(const Measurements& z, const std::vector<std::int32_t>& members,
                    const Rectangle& rect, const PlanarEmOptions& o) {
   return isCurved(measurePlanarity(z.points, members, rect), o.min_curvature_radius_m,
-                  o.rules.curved_min_variance_explained);
+                  o.min_curvature_depth_m, o.rules.curved_min_variance_explained);
 }
 
 SurfaceVerdict checkSurface(const Measurements& z, const std::vector<std::int32_t>& members,
@@ -69,6 +69,19 @@ bool fusionPartners(const Rectangle& a, const Rectangle& b, const PlanarEmOption
          std::abs(a.planeDistance(b.centre)) <= o.fuse_offset_m &&
          std::abs(b.planeDistance(a.centre)) <= o.fuse_offset_m &&
          rectangleGap(a, b) <= o.fuse_gap_m + o.fuse_offset_m;
+}
+
+bool sameSurfacePlace(const Rectangle& a, const Rectangle& b, double max_separation_m,
+                      const PlanarEmOptions& o) {
+  if (std::abs(a.normal.dot(b.normal)) < std::cos(o.fuse_angle_deg * M_PI / 180.0)) {
+    return false;
+  }
+  // Project the smaller onto the larger (less shrinking by the angle).
+  const bool a_larger = a.area() >= b.area();
+  const Overlap ov = a_larger ? overlapOf(a, b) : overlapOf(b, a);
+  const double smaller = std::min(a.area(), b.area());
+  return ov.area_m2 * 100.0 >= smaller * o.rules.same_place_overlap_percent &&
+         ov.max_separation_m <= max_separation_m;
 }
 
 double posteriorGain(double loglik_change, int surfaces_added, double empty_area_change_m2,

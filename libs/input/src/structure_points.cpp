@@ -8,7 +8,9 @@
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/system/datetime.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "pmap/common/error.h"
 
@@ -116,6 +118,88 @@ void extractCloud(const Vec& xs, const Vec& ys, const Vec& zs, const CPose3D& se
   }
 }
 
+// A rotating multi-beam lidar's sweep as a range image: row = the laser's
+// rank by elevation (VLP-16 lasers fire interleaved: laser 0 at -15 deg, 1
+// at +1 deg, ...), column = the azimuth in steps of the sweep's own firing
+// resolution (the median azimuth step between consecutive points of one
+// laser). Neighbours then lie along a ring and across to the next ring up
+// or down, not only along a ring as the nearest neighbours of such a sweep
+// do (its rings are 2 deg apart, its beams 0.2 deg).
+void extractVelodyne(const mrpt::obs::CObservationVelodyneScan& in, const CPose3D& sensor,
+                     StructureScan& out) {
+  mrpt::obs::CObservationVelodyneScan v = in;
+  mrpt::obs::CObservationVelodyneScan::TGeneratePointCloudParameters params;
+  params.generatePerPointAzimuth = true;
+  v.generatePointCloud(params);
+  const auto& pc = v.point_cloud;
+  const std::size_t n = pc.x.size();
+  if (pc.azimuth.size() != n || pc.laser_id.size() != n || n == 0) {
+    extractCloud(pc.x, pc.y, pc.z, sensor, out);  // no per-point ring data
+    return;
+  }
+  // Each laser's elevation (median over its points) and azimuth step.
+  std::map<int, std::vector<double>> elevations;
+  std::map<int, double> last_azimuth;
+  std::vector<double> steps;
+  for (std::size_t i = 0; i < n; ++i) {
+    const int id = pc.laser_id[i];
+    elevations[id].push_back(std::atan2(pc.z[i], std::hypot(pc.x[i], pc.y[i])));
+    const auto it = last_azimuth.find(id);
+    if (it != last_azimuth.end()) {
+      const double d = std::abs(pc.azimuth[i] - it->second);
+      if (d > 1e-6 && d < 5.0) {
+        steps.push_back(d);
+      }
+    }
+    last_azimuth[id] = pc.azimuth[i];
+  }
+  if (steps.empty()) {
+    extractCloud(pc.x, pc.y, pc.z, sensor, out);
+    return;
+  }
+  std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2),
+                   steps.end());
+  const double step = steps[steps.size() / 2];
+  std::vector<std::pair<double, int>> by_elevation;
+  for (auto& [id, e] : elevations) {
+    std::nth_element(e.begin(), e.begin() + static_cast<std::ptrdiff_t>(e.size() / 2), e.end());
+    by_elevation.emplace_back(e[e.size() / 2], id);
+  }
+  std::sort(by_elevation.begin(), by_elevation.end());
+  std::map<int, int> row_of;
+  for (std::size_t r = 0; r < by_elevation.size(); ++r) {
+    row_of[by_elevation[r].second] = static_cast<int>(r);
+  }
+  const auto wrapped = [](double az) {
+    az = std::fmod(az, 360.0);
+    return az < 0.0 ? az + 360.0 : az;
+  };
+  double lo = 360.0;
+  double hi = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (std::isfinite(pc.azimuth[i])) {
+      lo = std::min(lo, wrapped(pc.azimuth[i]));
+      hi = std::max(hi, wrapped(pc.azimuth[i]));
+    }
+  }
+  out.rows = static_cast<int>(by_elevation.size());
+  out.cols = static_cast<int>(std::lround((std::max(hi, lo) - lo) / step)) + 1;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3d p = toRobot(sensor, pc.x[i], pc.y[i], pc.z[i]);
+    if (!finite(p) || !std::isfinite(pc.azimuth[i])) {
+      ++out.dropped.non_finite;
+      continue;
+    }
+    const int col = std::clamp(static_cast<int>(std::lround((wrapped(pc.azimuth[i]) - lo) / step)),
+                               0, out.cols - 1);
+    out.points.push_back(p);
+    out.beams.push_back(row_of[pc.laser_id[i]] * out.cols + col);
+  }
+  // Cells of the sweep's grid without a return (no echo, too close or far).
+  const std::uint64_t seen = out.points.size() + out.dropped.non_finite;
+  out.dropped.invalid += out.measurements() > seen ? out.measurements() - seen : 0;
+}
+
 }  // namespace
 
 DropCounts& DropCounts::operator+=(const DropCounts& o) {
@@ -144,9 +228,7 @@ StructureScan extractStructureScan(const mrpt::obs::CObservation& obs, std::int6
   } else if (const auto* s3 = dynamic_cast<const CObservation3DRangeScan*>(&obs)) {
     extract3D(*s3, out);
   } else if (const auto* v = dynamic_cast<const CObservationVelodyneScan*>(&obs)) {
-    CObservationVelodyneScan copy = *v;
-    copy.generatePointCloud();
-    extractCloud(copy.point_cloud.x, copy.point_cloud.y, copy.point_cloud.z, sensor, out);
+    extractVelodyne(*v, sensor, out);
   } else if (const auto* pc = dynamic_cast<const CObservationPointCloud*>(&obs)) {
     pc->load();
     if (pc->pointcloud) {

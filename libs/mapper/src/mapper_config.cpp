@@ -144,6 +144,7 @@ void PlanarEmSection::load(config::SectionReader& r) {
   r.read("seed_outlier_probability", em.seed_outlier_probability);
   r.read("min_support", em.min_support);
   r.read("min_curvature_radius_m", em.min_curvature_radius_m);
+  r.read("min_curvature_depth_m", em.min_curvature_depth_m);
   r.read("fuse_angle_deg", em.fuse_angle_deg);
   r.read("fuse_offset_m", em.fuse_offset_m);
   r.read("fuse_gap_m", em.fuse_gap_m);
@@ -151,6 +152,8 @@ void PlanarEmSection::load(config::SectionReader& r) {
   r.read("split_min_offset_m", em.split_min_offset_m);
   r.read("empty_area_cost", em.empty_area_cost);
   r.read("max_iterations", em.max_iterations);
+  r.read("coarse_points", em.coarse_points);
+  r.read("fine_iterations", em.fine_iterations);
   r.read("convergence_tolerance", em.convergence_tolerance);
   r.read("convergence_patience", em.convergence_patience);
   r.read("convergence_absolute_nats", em.convergence_absolute_nats);

@@ -60,6 +60,7 @@ json historyJson(const std::vector<em::IterationRecord>& history) {
   for (const em::IterationRecord& rec : history) {
     h.push_back({{"iteration", rec.iteration},
                  {"surfaces", rec.surfaces},
+                 {"points", rec.points},
                  {"explained_fraction", rec.explained_fraction},
                  {"log_posterior", rec.log_posterior},
                  {"changes",
@@ -306,6 +307,9 @@ json summaryJson(const MapperArgs& args, const MappingResult& r, const StageCloc
   }
   s["duration_s"] = r.input.duration();
   s["mode"] = toString(r.kind);
+  if (!r.mode_note.empty()) {
+    s["mode_note"] = r.mode_note;
+  }
   s["warnings"] = r.warnings;
   s["pose_per_scan_ms"] = percentiles(poses.step_ms);
   if (r.planar) {

@@ -39,7 +39,7 @@ PlanarResult runOfflineEm(const MapperConfig& config, const MapperArgs& args,
                           const points::NeighbourGraph& graph, const points::PointMap& map) {
   ProgressLine progress("planar-mapper: EM", ProgressOptions{!args.quiet, 1.0, false});
   em::OfflineEm em(config.planar_em.em);
-  const int max_iterations = config.planar_em.em.max_iterations;
+  const int max_iterations = em.iterationCap(map.size());
   em.setObserver([&](const em::IterationRecord& rec) {
     char detail[96];
     std::snprintf(detail, sizeof detail, "%d surfaces, %.1f %% explained", rec.surfaces,
@@ -140,7 +140,8 @@ void correctPosesWithPlanes(const MapperConfig& config, const MapperArgs& args, 
 }
 
 // What runs after the points: the offline EM (also online's fallback for
-// unorganised clouds, which have no scan order), or nothing.
+// range images and unorganised clouds, which have no scan-line order), or
+// nothing.
 RunKind kindAfterPoints(const MapperArgs& args, const MappingResult& result) {
   if (args.poses_only) {
     return RunKind::kPosesOnly;

@@ -194,15 +194,23 @@ class RawlogRun {
     if (config_.output.raw_map) {
       mesh_.addScan(result_.points.map, record, scan.rows, scan.cols, scan.organised);
     }
-    if (online_ && scan.organised) {
+    if (online_ && scan.organised && scan.rows <= 1) {
       auto in_em = clock_.enter(Stage::kEm);
       online_->addScan(result_.points.map, record);
-    } else if (online_) {
-      unorganised_ = true;
+    } else if (online_ && !offline_fallback_) {
+      // The online EM takes its measurements one scan line at a time (the
+      // paper's vertical laser); a range image or an unorganised scan has
+      // no such order: the whole map goes to the offline EM.
+      offline_fallback_ = true;
+      result_.mode_note = std::string("scan ") + std::to_string(scan.index) + " (" + scan.label +
+                          ") is " + (scan.organised ? "a range image" : "an unorganised cloud") +
+                          ": the default (online) mode maps this input with the offline EM, "
+                          "which takes whole frames";
     }
     if (live_ != nullptr && live_->due()) {
-      const std::optional<em::PlanarMap> planar =
-          online_ && !unorganised_ ? std::optional<em::PlanarMap>(online_->map()) : std::nullopt;
+      const std::optional<em::PlanarMap> planar = online_ && !offline_fallback_
+                                                      ? std::optional<em::PlanarMap>(online_->map())
+                                                      : std::nullopt;
       live_->update(result_.points.map, record, planar ? &*planar : nullptr);
     }
   }
@@ -247,7 +255,7 @@ class RawlogRun {
     result_.points.placement = placer_.stats();
     result_.points.raw_triangles = mesh_.triangles();
     checkUsable();
-    if (online_ && !unorganised_) {
+    if (online_ && !offline_fallback_) {
       result_.kind = RunKind::kOnline;
       PlanarResult planar;
       planar.online = online_->history();
@@ -269,7 +277,7 @@ class RawlogRun {
     showLoops(stage);
     const std::vector<std::size_t> moved = placer_.follow(stage.trajectory());
     result_.points.scans_moved += moved.size();
-    if (online_ && !unorganised_ && !moved.empty()) {
+    if (online_ && !offline_fallback_ && !moved.empty()) {
       auto in_em = clock_.enter(Stage::kEm);
       online_->moveScans(result_.points.map, moved);
     }
@@ -306,7 +314,7 @@ class RawlogRun {
   StageClock& clock_;
   LiveView* live_;
   std::unique_ptr<OnlineStage> online_;
-  bool unorganised_ = false;
+  bool offline_fallback_ = false;
   std::size_t corrections_ = 0;  ///< the pose stage's corrections() the map follows
   points::RawMeshBuilder mesh_;
   points::ScanPlacer placer_;

@@ -86,7 +86,7 @@ class ModelSelector {
       std::size_t j) const;
   /// The best replacement of surface j among `options` (empty: none gains).
   std::vector<Rectangle> bestSplit(
-      std::size_t j, const Surface& s, const std::vector<std::int32_t>& members,
+      const std::vector<Surface>& surfaces, std::size_t j, const std::vector<std::int32_t>& members,
       const std::vector<std::vector<std::vector<std::int32_t>>>& options,
       const Responsibilities& resp) const;
 
@@ -120,6 +120,11 @@ class ModelSelector {
   double cutoff_;
   PointGrid grid_;
   bool isTabu(const Rectangle& r) const;
+  /// Whether new rectangles `parts` (replacing surface `replaced`, -1: none)
+  /// would occupy the same place as each other or as another surface
+  /// (sameSurfacePlace): such a change is not made.
+  bool placeTaken(const std::vector<Rectangle>& parts, const std::vector<Surface>& surfaces,
+                  std::ptrdiff_t replaced) const;
 
   int round_ = 0;
   std::deque<std::pair<int, Rectangle>> tabu_;  ///< (round, rectangle) of recent removals

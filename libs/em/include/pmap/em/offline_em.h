@@ -26,6 +26,7 @@ struct IterationRecord {
   double explained_fraction = 0.0;  ///< share of points whose most likely cause is a surface
   double log_posterior = 0.0;       ///< of the map entering this iteration (eq. 30)
   double log_likelihood = 0.0;      ///< sum_i l_i (prior held fixed)
+  std::size_t points = 0;           ///< measurements it ran on (a sample: coarse-to-fine)
   SelectionChanges changes;         ///< model selection made before this iteration's E-step
 };
 
@@ -45,6 +46,9 @@ struct EmResult {
   Termination termination = Termination::kNoPoints;
   int iterations = 0;
   std::vector<IterationRecord> history;
+  /// Coarse-to-fine: surfaces the removal test on all points took out after
+  /// the sample's model selection.
+  int removed_on_all = 0;
   std::string message;
 };
 
@@ -55,10 +59,15 @@ class OfflineEm {
 
   /// Maps `points` (finite). `initial` surfaces start the EM (none: all from
   /// seeding). Same input, options and seed give the same map whatever
-  /// options.threads is.
+  /// options.threads is. More than 2 x coarse_points points: coarse to fine
+  /// (model selection on a sample, planar_em_options.h).
   /// `rows` (may be empty): each point's row (scan), for the min_rows test.
   EmResult run(const std::vector<Eigen::Vector3d>& points, const Neighbours& neighbours,
                const std::vector<std::int32_t>& rows, std::vector<Surface> initial = {}) const;
+
+  /// Most iterations a run on `points` points makes: max_iterations, plus
+  /// fine_iterations coarse to fine.
+  int iterationCap(std::size_t points) const;
 
   /// Called after every iteration's E-step (progress lines); no effect on the map.
   void setObserver(std::function<void(const IterationRecord&)> observer) {
@@ -66,6 +75,15 @@ class OfflineEm {
   }
 
  private:
+  bool coarseToFine(std::size_t points) const;
+  /// EM iterations on `points` (those of `selector`) until converged or
+  /// max_iterations, appended to `result` (iterations, history,
+  /// termination); with `with_selection`, a model-selection round every
+  /// selection_interval iterations.
+  void iterate(const std::vector<Eigen::Vector3d>& points, const Neighbours& neighbours,
+               const PlanarEmOptions& options, ModelSelector& selector, bool with_selection,
+               std::vector<Surface>& surfaces, EmResult& result) const;
+
   PlanarEmOptions options_;
   std::function<void(const IterationRecord&)> observer_;
 };

@@ -64,6 +64,15 @@ struct PlanarEmOptions {
   /// not a plane (planarity.h) and is not kept (m), > 0: a wall does not
   /// bend measurably, a bin or a column bends with a radius well under 1 m.
   double min_curvature_radius_m = 1.0;
+  /// ... and only when the bend is at least this deep across the surface
+  /// (its sagitta, planarity.h) (m), >= 0. 0 (default): any depth, so a
+  /// bin's strip a plane explains is curved however narrow. A sensor whose
+  /// systematic error bends flat surfaces sets it above that bend: a range
+  /// camera's depth distortion bends a wall 1-2.5 cm deep on MRPT's Kinect
+  /// frame (config/mrpt-rgbd.ini: 0.04); on the simulated worlds at sigma
+  /// 5 cm a bin's strips are 6.7-13 cm deep, so 2 sigma there would keep
+  /// bins as planes (doc/em.md).
+  double min_curvature_depth_m = 0.0;
   // Fusion of surfaces that are the same plane: candidate pairs only (the
   // posterior decides); loose enough for two halves of one wall fitted
   // from noisy, partial views.
@@ -103,6 +112,23 @@ struct PlanarEmOptions {
   /// skipped in the E-step (their responsibility is below it), in (0, 1):
   /// 1e-6 changes no weight that matters and bounds the work per point.
   double responsibility_tolerance = 1e-6;
+  /// Coarse-to-fine offline EM (offline_em.h), 0 or >= 1000: an input of
+  /// more than twice this many points runs the EM with its model selection
+  /// on a uniform random sample of this many (subsample.h: the thresholds
+  /// that count points or nats scaled to it), then at most fine_iterations
+  /// E- and M-steps on all points from the sample's surfaces, then the
+  /// removal test on all points. 0: every iteration on all points (the
+  /// default: the simulated scans of doc/RESULTS.md are mapped as before).
+  /// A range camera's frame holds 300k points on a few square metres, far
+  /// more than model selection needs to decide (config/mrpt-rgbd.ini).
+  int coarse_points = 0;
+  /// E- and M-steps on all points after the sample's EM, >= 1: the first
+  /// ones fit each surface to its full set of points (the sample's planes
+  /// and boundaries are within a sample spacing of them); later ones only
+  /// creep: on the Kinect frame the clutter surfaces that share points kept
+  /// moving by degrees over 80 more iterations while the explained share
+  /// changed by 0.2 % (doc/real-geometry.md).
+  int fine_iterations = 5;
   bool bounded = true;          ///< false: unbounded planes (property tests)
   bool model_selection = true;  ///< false: J fixed to the initial surfaces
   /// Longest edge of a fine triangle (m), > 0: a few beam spacings, so

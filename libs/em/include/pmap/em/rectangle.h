@@ -34,6 +34,16 @@ struct Rectangle {
   void reproject();
 };
 
+/// Where two rectangles cover the same place: `b` projected orthogonally
+/// onto `a`'s plane and clipped to `a`.
+struct Overlap {
+  double area_m2 = 0.0;  ///< of the clipped projection (0: none, or either unbounded / empty)
+  /// Largest distance from b's plane of a point of `a` inside the overlap
+  /// (at a vertex of the clipped polygon: the distance is linear in it) (m).
+  double max_separation_m = 0.0;
+};
+Overlap overlapOf(const Rectangle& a, const Rectangle& b);
+
 /// Plane through three points; false if they are (nearly) collinear, judged
 /// by the ratio of the triangle's area to its longest side squared.
 bool planeFromPoints(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,

@@ -65,6 +65,14 @@ double rectangleGap(const Rectangle& a, const Rectangle& b);
 /// fuse_offset_m) of each other.
 bool fusionPartners(const Rectangle& a, const Rectangle& b, const PlanarEmOptions& o);
 
+/// Whether two surfaces occupy the same place (SelectionRules::
+/// same_place_*): planes within `max_separation_m` of each other over an
+/// overlap of at least same_place_overlap_percent of the smaller one.
+/// Existing surfaces that do at split_min_offset_m are fused; a new surface
+/// may not be created where it would at same_place_clearance times that.
+bool sameSurfacePlace(const Rectangle& a, const Rectangle& b, double max_separation_m,
+                      const PlanarEmOptions& o);
+
 /// Eq. (30): the change of log p(Theta | Z) of a model-selection step, from
 /// the change of the summed point scores (nats), the surfaces it adds (< 0:
 /// removes) and the change of the rectangles' empty area (m^2, > 0: more

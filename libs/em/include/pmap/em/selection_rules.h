@@ -96,6 +96,23 @@ struct SelectionRules {
   int corner_on_plane_percent = 90;
   int corner_beside_percent = 10;
   double corner_beside_margin_m = 0.1;
+  /// Two surfaces occupy the same place (sameSurfacePlace) when, besides
+  /// normals within fuse_angle_deg, one rectangle covers at least
+  /// `same_place_overlap_percent` of the smaller one's area and their planes
+  /// are within split_min_offset_m of each other all over that overlap:
+  /// surfaces are opaque, a sensor cannot see two of them at the same
+  /// place, and the split test would not cut a patch that close off a
+  /// surface either. Such a pair is one surface whose points deviate from a
+  /// plane in a way the model does not describe (a range camera's depth
+  /// distortion and disparity staircase, a slightly bent wall); it is fused
+  /// whatever the likelihood says. A new surface (seed or split part) must
+  /// stand clear of every surface it overlaps so by more than
+  /// `same_place_clearance` times split_min_offset_m (hysteresis: a part
+  /// created just beyond the fusion distance would be pulled within it by
+  /// the next M-steps, fused, and created again). A door 10 cm behind its
+  /// wall is created and kept (6 cm at the default 4 cm).
+  int same_place_overlap_percent = 50;
+  double same_place_clearance = 1.5;
   /// Offline seeding work bound: seed triples grown per round, per surface
   /// the round may add (max_new_per_round); most grown regions fail the
   /// validity or the posterior test (the value of the starting code).

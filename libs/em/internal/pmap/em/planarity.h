@@ -19,15 +19,20 @@ namespace pmap::em {
 struct Planarity {
   double curvature_radius_m = 0.0;  ///< 1 / largest |principal curvature|; inf if flat
   double variance_explained = 0.0;  ///< share of the residual variance the quadratic explains
+  /// How deep the bend is across the members: k L^2 / 8 for the largest
+  /// |principal curvature| k and the members' extent L along its direction
+  /// (the sagitta of that arc) (m); 0 if flat.
+  double bend_depth_m = 0.0;
 };
 
 Planarity measurePlanarity(const std::vector<Eigen::Vector3d>& points,
                            const std::vector<std::int32_t>& members, const Rectangle& rect);
 
-/// True when the points bend with a radius below `min_radius_m` and the bend
-/// explains at least `min_variance_explained` of the residual variance
-/// (SelectionRules::curved_min_variance_explained).
-bool isCurved(const Planarity& p, double min_radius_m,
+/// True when the points bend with a radius below `min_radius_m`, the bend
+/// is at least `min_depth_m` deep across them and it explains at least
+/// `min_variance_explained` of the residual variance
+/// (SelectionRules::curved_min_*).
+bool isCurved(const Planarity& p, double min_radius_m, double min_depth_m,
               double min_variance_explained = SelectionRules{}.curved_min_variance_explained);
 
 }  // namespace pmap::em

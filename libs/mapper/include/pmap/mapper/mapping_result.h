@@ -124,6 +124,9 @@ struct MappingResult {
   PoseResult poses;
   PointsResult points;
   std::optional<PlanarResult> planar;  ///< kinds online and offline
+  /// Why the default (online) mode ran the offline EM instead (empty: it
+  /// did not): summary.json "mode_note".
+  std::string mode_note;
   /// Outcomes worth a warning (printed, and listed in summary.json), e.g.
   /// "nothing found" (doc/robustness.md).
   std::vector<std::string> warnings;
