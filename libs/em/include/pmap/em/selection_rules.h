@@ -98,7 +98,10 @@ struct SelectionRules {
   double corner_beside_margin_m = 0.1;
   /// Two surfaces occupy the same place (sameSurfacePlace) when, besides
   /// normals within fuse_angle_deg, one rectangle covers at least
-  /// `same_place_overlap_percent` of the smaller one's area and their planes
+  /// `same_place_overlap_percent` of the smaller one's area (25: on the
+  /// Kinect frame mapped with every point, the wall came out as two pieces
+  /// interleaved along a diagonal band, their rectangles overlapping by
+  /// more than a quarter and less than half) and their planes
   /// are within split_min_offset_m of each other all over that overlap:
   /// surfaces are opaque, a sensor cannot see two of them at the same
   /// place, and the split test would not cut a patch that close off a
@@ -111,7 +114,7 @@ struct SelectionRules {
   /// created just beyond the fusion distance would be pulled within it by
   /// the next M-steps, fused, and created again). A door 10 cm behind its
   /// wall is created and kept (6 cm at the default 4 cm).
-  int same_place_overlap_percent = 50;
+  int same_place_overlap_percent = 25;
   double same_place_clearance = 1.5;
   /// Offline seeding work bound: seed triples grown per round, per surface
   /// the round may add (max_new_per_round); most grown regions fail the
