@@ -1,7 +1,10 @@
 #!/usr/bin/env python3
 """Plots a planar-mapper points.ply coloured by surface id (black = outlier
 class): a front view (looking along +x) and a top view. Needs matplotlib and
-numpy (Debian: python3-matplotlib). Usage: plot_surfaces.py points.ply out.png TITLE"""
+numpy (Debian: python3-matplotlib).
+Usage: plot_surfaces.py points.ply out.png TITLE [MAX_RANGE_M]
+(MAX_RANGE_M: only points this close to the origin in x and y; with it the
+top view is drawn with a larger marker, for sparse lidar sweeps)"""
 import sys
 
 import matplotlib
@@ -23,6 +26,11 @@ def read_points(path):
 
 def main():
     points = read_points(sys.argv[1])
+    size = 0.4
+    if len(sys.argv) > 4:
+        reach = float(sys.argv[4])
+        points = points[(np.abs(points["x"]) <= reach) & (np.abs(points["y"]) <= reach)]
+        size = 2.0
     ids = np.unique(points["surface"])
     rng = np.random.default_rng(7)
     colours = {i: rng.uniform(0.15, 0.95, 3) for i in ids}
@@ -31,9 +39,9 @@ def main():
     step = max(1, len(points) // 60000)
     sel = slice(None, None, step)
     fig, ax = plt.subplots(1, 2, figsize=(13, 5.5))
-    ax[0].scatter(-points["y"][sel], points["z"][sel], c=c[sel], s=0.4)
+    ax[0].scatter(-points["y"][sel], points["z"][sel], c=c[sel], s=size)
     ax[0].set_title("front view (left-right, up)")
-    ax[1].scatter(-points["y"][sel], points["x"][sel], c=c[sel], s=0.4)
+    ax[1].scatter(-points["y"][sel], points["x"][sel], c=c[sel], s=size)
     ax[1].set_title("top view (left-right, depth)")
     for a in ax:
         a.set_aspect("equal")
