@@ -91,15 +91,8 @@ TEST(NearestNeighbours, EmptyAndSinglePointHaveNoNeighbours) {
   EXPECT_EQ(n[0], (Slots{-1, -1, -1, -1}));
 }
 
-TEST(NearestNeighbours, MatchesBruteForceWithinTheRadius) {
-  std::mt19937_64 rng(17);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  std::vector<Eigen::Vector3d> pts;
-  for (int k = 0; k < 400; ++k) {
-    pts.emplace_back(u(rng), u(rng), 0.3 * u(rng));
-  }
-  pts.push_back(pts[10]);  // a duplicate: distance 0
-  const double radius = 0.2;
+// The 4 nearest within the radius, by brute force, ties by index.
+void expectBruteForce(const std::vector<Eigen::Vector3d>& pts, double radius) {
   const Neighbours n = nearestNeighbours(pts, radius);
   for (std::size_t i = 0; i < pts.size(); ++i) {
     std::vector<std::pair<double, std::int32_t>> all;
@@ -111,11 +104,39 @@ TEST(NearestNeighbours, MatchesBruteForceWithinTheRadius) {
     }
     std::sort(all.begin(), all.end());
     for (std::size_t s = 0; s < 4; ++s) {
-      EXPECT_EQ(n[i][s], s < all.size() ? all[s].second : -1) << "point " << i;
+      ASSERT_EQ(n[i][s], s < all.size() ? all[s].second : -1) << "point " << i;
     }
   }
+}
+
+TEST(NearestNeighbours, MatchesBruteForceWithinTheRadius) {
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Eigen::Vector3d> pts;
+  for (int k = 0; k < 400; ++k) {
+    pts.emplace_back(u(rng), u(rng), 0.3 * u(rng));
+  }
+  pts.push_back(pts[10]);  // a duplicate: distance 0
+  expectBruteForce(pts, 0.2);
+  const Neighbours n = nearestNeighbours(pts, 0.2);
   EXPECT_EQ(n[10][0], static_cast<std::int32_t>(pts.size() - 1));
   EXPECT_EQ(n.back()[0], 10);
+}
+
+// Dense: about 30 points within an eighth of the radius, where the search
+// looks first; a sparse corner of the box makes some points search the
+// whole radius. Same answer as brute force either way.
+TEST(NearestNeighbours, DenseCloudsMatchBruteForceToo) {
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> u(-0.2, 0.2);
+  std::vector<Eigen::Vector3d> pts;
+  for (int k = 0; k < 3000; ++k) {
+    pts.emplace_back(u(rng), u(rng), 0.1 * u(rng));
+  }
+  for (int k = 0; k < 40; ++k) {
+    pts.emplace_back(0.5 + u(rng), 0.5 + u(rng), u(rng));
+  }
+  expectBruteForce(pts, 0.2);
 }
 
 TEST(NearestNeighbours, TiesAreBrokenByIndex) {

@@ -26,15 +26,27 @@ Neighbours gridNeighbours(const std::vector<GridKey>& keys) {
 }
 
 Neighbours nearestNeighbours(const std::vector<Eigen::Vector3d>& points, double radius_m) {
+  // Dense clouds (a range camera's frame: hundreds of points within the
+  // radius) look within an eighth of it first: every point that close is
+  // listed, so when four are, they are the four nearest (ties included).
+  // Only points with fewer than four that close search the whole radius.
+  const double near_m = 0.125 * radius_m;
+  const PointGrid near_grid(points, near_m);
   const PointGrid grid(points, radius_m);
   Neighbours out(points.size(), {-1, -1, -1, -1});
   std::vector<std::pair<double, std::int32_t>> cand;
-  for (size_t i = 0; i < points.size(); ++i) {
+  const auto collect = [&](std::size_t i, const std::vector<std::int32_t>& found) {
     cand.clear();
-    for (const std::int32_t j : grid.within(points[i], radius_m)) {
+    for (const std::int32_t j : found) {
       if (j != static_cast<std::int32_t>(i)) {
         cand.emplace_back((points[j] - points[i]).squaredNorm(), j);
       }
+    }
+  };
+  for (size_t i = 0; i < points.size(); ++i) {
+    collect(i, near_grid.within(points[i], near_m));
+    if (cand.size() < 4) {
+      collect(i, grid.within(points[i], radius_m));
     }
     const size_t k = std::min<size_t>(4, cand.size());
     std::partial_sort(cand.begin(), cand.begin() + static_cast<std::ptrdiff_t>(k), cand.end());
