@@ -477,10 +477,6 @@ int ModelSelector::fuse(std::vector<Surface>& surfaces, std::int32_t& next_id) {
   return fuseSurfaces(surfaces, resp, next_id);
 }
 
-// Tabu (against model-selection cycles): a surface removed in one of the
-// last rules.tabu_rounds rounds may not be created again by a split or a
-// seed; a split that the next round's removal undoes would otherwise repeat
-// forever.
 bool ModelSelector::placeTaken(const std::vector<Rectangle>& parts,
                                const std::vector<Surface>& surfaces,
                                std::ptrdiff_t replaced) const {
@@ -501,6 +497,10 @@ bool ModelSelector::placeTaken(const std::vector<Rectangle>& parts,
   return false;
 }
 
+// Tabu (against model-selection cycles): a surface removed in one of the
+// last rules.tabu_rounds rounds may not be created again by a split or a
+// seed; a split that the next round's removal undoes would otherwise repeat
+// forever.
 bool ModelSelector::isTabu(const Rectangle& r) const {
   return std::any_of(tabu_.begin(), tabu_.end(),
                      [&](const auto& t) { return sameAsRemoved(r, t.second, options_); });

@@ -109,8 +109,8 @@ EmResult OfflineEm::run(const std::vector<Eigen::Vector3d>& points, const Neighb
     fine.max_iterations = options_.fine_iterations;
     ModelSelector on_all(points, neighbours, rows, options_);
     iterate(points, neighbours, fine, on_all, false, surfaces, result);
-    result.termination = on_the_sample;              // the fine phase is capped by design
-    result.removed_on_all = on_all.prune(surfaces);  // the full data's verdict
+    result.termination = on_the_sample;  // the fine phase is capped by design
+    on_all.prune(surfaces);              // the full data's verdict
     result.map = finalizeMap(points, neighbours, std::move(surfaces), on_all, options_);
     result.message = std::string(toString(result.termination)) + " after " +
                      std::to_string(coarse_iterations) + " iterations on a sample of " +

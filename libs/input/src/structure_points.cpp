@@ -142,6 +142,10 @@ void extractVelodyne(const mrpt::obs::CObservationVelodyneScan& in, const CPose3
   std::map<int, double> last_azimuth;
   std::vector<double> steps;
   for (std::size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(pc.x[i]) || !std::isfinite(pc.y[i]) || !std::isfinite(pc.z[i]) ||
+        !std::isfinite(pc.azimuth[i])) {
+      continue;  // dropped below; a NaN would break the medians' ordering
+    }
     const int id = pc.laser_id[i];
     elevations[id].push_back(std::atan2(pc.z[i], std::hypot(pc.x[i], pc.y[i])));
     const auto it = last_azimuth.find(id);

@@ -194,7 +194,7 @@ class RawlogRun {
     if (config_.output.raw_map) {
       mesh_.addScan(result_.points.map, record, scan.rows, scan.cols, scan.organised);
     }
-    if (online_ && scan.organised && scan.rows <= 1) {
+    if (online_ && !offline_fallback_ && scan.organised && scan.rows <= 1) {
       auto in_em = clock_.enter(Stage::kEm);
       online_->addScan(result_.points.map, record);
     } else if (online_ && !offline_fallback_) {

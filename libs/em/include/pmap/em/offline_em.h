@@ -46,9 +46,6 @@ struct EmResult {
   Termination termination = Termination::kNoPoints;
   int iterations = 0;
   std::vector<IterationRecord> history;
-  /// Coarse-to-fine: surfaces the removal test on all points took out after
-  /// the sample's model selection.
-  int removed_on_all = 0;
   std::string message;
 };
 
