@@ -177,8 +177,9 @@ TEST(DefaultReturnWorld, Item15_WithLoopClosureTheMapFollowsTheFinalPoses) {
   mrpt::graphs::CNetworkOfPoses2DInf graph;
   graph.loadFromTextFile((out / "poses.graph").string());
   EXPECT_EQ(graph.nodes.size(), loops["keyframes"].get<std::size_t>());
-  // odometry edges between consecutive keyframes, plus the accepted loops
-  EXPECT_EQ(graph.edges.size(), graph.nodes.size() - 1 + loops["accepted"].get<std::size_t>());
+  // odometry edges between consecutive keyframes, the accepted loops and the path constraints
+  EXPECT_EQ(graph.edges.size(), graph.nodes.size() - 1 + loops["accepted"].get<std::size_t>() +
+                                    loops["path_constraints"].get<std::size_t>());
 }
 
 // planar-mapper --poses-only on a simulated world with config/default.ini

@@ -10,67 +10,28 @@
 #include <random>
 #include <string>
 
+#include "segment_world.h"
+
 namespace pmap::poses {
 namespace {
 
-struct Segment {
-  Eigen::Vector2d a, b;
-};
+using testing::addBox;
+using testing::scan;
+using testing::Segment;
 
 // A ring corridor 2 m wide around a 20 x 10 m block, with niches and
 // pillars at irregular places so that its sides do not look alike.
 std::vector<Segment> ringWorld() {
   std::vector<Segment> w;
-  const auto box = [&w](double x0, double y0, double x1, double y1) {
-    w.push_back({{x0, y0}, {x1, y0}});
-    w.push_back({{x1, y0}, {x1, y1}});
-    w.push_back({{x1, y1}, {x0, y1}});
-    w.push_back({{x0, y1}, {x0, y0}});
-  };
-  box(0, 0, 24, 14);        // outer wall
-  box(2, 2, 22, 12);        // the block inside
-  box(5.0, 0.0, 5.6, 0.5);  // pillars against the walls
-  box(13.3, 13.4, 14.5, 14.0);
-  box(23.5, 6.1, 24.0, 7.9);
-  box(0.0, 9.0, 0.4, 9.3);
-  box(9.0, 1.5, 9.8, 2.0);
-  box(17.2, 12.0, 17.5, 12.6);
+  addBox(w, 0, 0, 24, 14);        // outer wall
+  addBox(w, 2, 2, 22, 12);        // the block inside
+  addBox(w, 5.0, 0.0, 5.6, 0.5);  // pillars against the walls
+  addBox(w, 13.3, 13.4, 14.5, 14.0);
+  addBox(w, 23.5, 6.1, 24.0, 7.9);
+  addBox(w, 0.0, 9.0, 0.4, 9.3);
+  addBox(w, 9.0, 1.5, 9.8, 2.0);
+  addBox(w, 17.2, 12.0, 17.5, 12.6);
   return w;
-}
-
-double rayHit(const std::vector<Segment>& world, const Eigen::Vector2d& o, const Eigen::Vector2d& d,
-              double max_range) {
-  double best = max_range;
-  for (const Segment& s : world) {
-    const Eigen::Vector2d e = s.b - s.a;
-    const double den = d.x() * e.y() - d.y() * e.x();
-    if (std::abs(den) < 1e-12) {
-      continue;
-    }
-    const Eigen::Vector2d w = s.a - o;
-    const double t = (w.x() * e.y() - w.y() * e.x()) / den;
-    const double u = (w.x() * d.y() - w.y() * d.x()) / den;
-    if (t > 0 && u >= 0 && u <= 1 && t < best) {
-      best = t;
-    }
-  }
-  return best;
-}
-
-// A 181-beam, 180-degree scan from `pose`, in the robot frame.
-std::vector<Eigen::Vector2d> scan(const std::vector<Segment>& world, const Pose2& pose,
-                                  std::mt19937& rng) {
-  std::normal_distribution<double> noise(0.0, 0.01);
-  std::vector<Eigen::Vector2d> out;
-  for (int i = 0; i <= 180; ++i) {
-    const double a = (i - 90) * M_PI / 180.0;
-    const Eigen::Vector2d d(std::cos(pose.theta + a), std::sin(pose.theta + a));
-    const double r = rayHit(world, {pose.x, pose.y}, d, 15.0);
-    if (r < 15.0) {
-      out.emplace_back((r + noise(rng)) * std::cos(a), (r + noise(rng)) * std::sin(a));
-    }
-  }
-  return out;
 }
 
 // The centre line of the ring, counter-clockwise from (1, 1), `laps` times,
@@ -260,6 +221,68 @@ TEST(LoopClosure, PosesBeforeTheFirstKeyframeFollowIt) {
   EXPECT_NEAR(c.x, expected.x, 1e-12);
   EXPECT_NEAR(c.y, expected.y, 1e-12);
   EXPECT_NEAR(c.theta, expected.theta, 1e-12);
+}
+
+// Issue 15 (the loop world's along-axis error): a front end that is right on
+// average but jitters along the path (2 cm per scan, as MRPT's ICP does
+// along a corridor), and wheel odometry that reads 2 % long and drifts 1
+// deg/m, as the simulator's. With the odometry, calibrated online from the
+// refined edges, the keyframes keep to the truth better than with the
+// front end's relative poses as the edges' prior, and the calibration is
+// the odometry's.
+struct OdometryRun {
+  double rms_m = 0;  ///< keyframes' final poses against the truth, after the end
+  OdometryCalibration calibration;
+};
+
+OdometryRun driveWithOdometry(bool use_odometry) {
+  const auto world = ringWorld();
+  const std::vector<Pose2> path = ringPath(2);
+  LoopClosureOptions options = enabled();
+  options.odometry.enabled = use_odometry;
+  LoopClosingBackEnd back_end(options);
+  std::mt19937 rng(17);
+  std::normal_distribution<double> jitter_m(0.0, 0.02);
+  OdometrySample odometry;
+  double t = 0;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    if (i > 0) {
+      const Pose2 step = between(path[i - 1], path[i]);
+      const double d = std::hypot(step.x, step.y);
+      odometry.pose = compose(odometry.pose,
+                              {1.02 * step.x, 1.02 * step.y, step.theta + 1.0 * M_PI / 180.0 * d});
+      odometry.path_m += 1.02 * d;
+    }
+    const Pose2& truth = path[i];
+    const double along = jitter_m(rng);
+    const Pose2 front{truth.x + along * std::cos(truth.theta),
+                      truth.y + along * std::sin(truth.theta), truth.theta};
+    back_end.addScan(t += 0.1, front, scan(world, truth, rng), odometry);
+  }
+  back_end.finish();
+  OdometryRun r;
+  double sum = 0;
+  for (std::size_t k = 0; k < back_end.keyframes().size(); ++k) {
+    const auto i = static_cast<std::size_t>(std::lround(back_end.keyframes()[k].t / 0.1)) - 1;
+    const Pose2& p = back_end.graph().node(k);
+    // the graph's frame is the first keyframe's front-end pose, which is the truth
+    sum += std::pow(p.x - path[i].x, 2) + std::pow(p.y - path[i].y, 2);
+  }
+  r.rms_m = std::sqrt(sum / static_cast<double>(back_end.keyframes().size()));
+  r.calibration = back_end.odometryModel().calibration();
+  return r;
+}
+
+TEST(LoopClosure, CalibratedOdometryHoldsTheKeyframesToThePath) {
+  const OdometryRun without = driveWithOdometry(false);
+  const OdometryRun with = driveWithOdometry(true);
+  std::printf("keyframes' RMS error: front-end prior %.4f m, calibrated odometry %.4f m\n",
+              without.rms_m, with.rms_m);
+  EXPECT_EQ(without.calibration.edges, 0u);
+  EXPECT_GT(with.calibration.edges, 100u);
+  EXPECT_NEAR(with.calibration.scale, 1.0 / 1.02 - 1.0, 0.005);
+  EXPECT_NEAR(with.calibration.drift_rad_per_m * 180.0 / M_PI, -1.0 / 1.02, 0.1);
+  EXPECT_LT(with.rms_m, without.rms_m);
 }
 
 // A long bare corridor driven there and back: every place looks like every

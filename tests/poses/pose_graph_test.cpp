@@ -138,5 +138,33 @@ TEST(PoseGraph, AWrongLoopStaysVisibleAndCanBeRemoved) {
   }
 }
 
+// An edge made again (odometry_model.h's remake): same nodes, new
+// measurement and information; a path constraint is robust like a loop but
+// is not the loop a refused closure takes out again.
+TEST(PoseGraph, EdgesAreReplacedAndPathConstraintsAreNotLoops) {
+  PoseGraph g;
+  g.addNode({});
+  g.addNode({1.0, 0.0, 0.0});
+  g.addNode({2.0, 0.0, 0.0});
+  g.addEdge(edge(0, 1, {1.0, 0, 0}));
+  g.addEdge(edge(1, 2, {1.0, 0, 0}));
+  EXPECT_FALSE(g.hasLoops());
+  g.setEdge(1, {1.1, 0.0, 0.0}, Eigen::Matrix3d::Identity() * 7.0);
+  EXPECT_EQ(g.edges()[1].from, 1u);
+  EXPECT_DOUBLE_EQ(g.edges()[1].measurement.x, 1.1);
+  EXPECT_DOUBLE_EQ(g.edges()[1].information(2, 2), 7.0);
+  EXPECT_THROW(g.setEdge(2, {}, Eigen::Matrix3d::Identity()), std::out_of_range);
+  PoseEdge constraint = edge(0, 2, {2.1, 0, 0}, true);
+  constraint.path = true;
+  g.addEdge(constraint);
+  EXPECT_TRUE(g.hasLoops());
+  g.addEdge(edge(0, 2, {2.0, 0, 0}, true));  // a loop closure
+  g.removeLastLoopEdge();
+  ASSERT_EQ(g.edges().size(), 3u);
+  EXPECT_TRUE(g.edges().back().path);
+  g.removeLastLoopEdge();  // no loop closure left: the constraint stays
+  EXPECT_EQ(g.edges().size(), 3u);
+}
+
 }  // namespace
 }  // namespace pmap::poses

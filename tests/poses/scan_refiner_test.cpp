@@ -103,6 +103,11 @@ TEST(ScanRefiner, KeepsTheGuessAlongACorridor) {
   EXPECT_GT(r.information(1, 1), 10.0 * prior(1, 1));
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(r.information);
   EXPECT_GT(eig.eigenvalues().minCoeff(), 0.0);  // positive definite: a valid edge
+  // The points' own Hessian comes apart from the prior: what the odometry
+  // calibration and the edges made again use (odometry_model.h).
+  EXPECT_TRUE(r.information.isApprox(
+      ScanRefineOptions{}.information_scale * r.data_information + prior, 1e-12));
+  EXPECT_LT(r.data_information(0, 0), 0.01 * r.data_information(1, 1));  // nothing along
 }
 
 TEST(ScanRefiner, ReturnsThePriorWithTooFewMatches) {
@@ -115,6 +120,7 @@ TEST(ScanRefiner, ReturnsThePriorWithTooFewMatches) {
   EXPECT_EQ(r.pose.x, guess.x);
   EXPECT_EQ(r.pose.theta, guess.theta);
   EXPECT_TRUE(r.information.isApprox(weakPrior()));
+  EXPECT_TRUE(r.data_information.isZero());
 }
 
 // A corner is no line: points whose neighbours along the scan turn a

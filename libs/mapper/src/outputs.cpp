@@ -270,12 +270,24 @@ json summaryJson(const MapperArgs& args, const MappingResult& r, const StageCloc
                                   {"rejected_by_free_space", l.rejected_free_space},
                                   {"rejected_by_chi2", l.rejected_chi2},
                                   {"accepted", l.accepted},
+                                  {"path_constraints", l.path_constraints},
+                                  {"path_constraints_rejected", l.path_constraints_rejected},
                                   {"search_s", l.search_s},
                                   {"solve_s", l.solve_s},
                                   {"wait_s", l.wait_s},
                                   {"trajectory_rewrites", poses.corrections},
                                   {"structure_scans_moved", points.scans_moved}};
     s["poses"]["loop_closure"]["closures"] = closuresSummary(poses.closures);
+    if (const auto& c = poses.odometry_calibration) {
+      s["poses"]["loop_closure"]["odometry_calibration"] = {
+          {"edges", c->edges},
+          {"scale", c->scale},
+          {"scale_sigma", std::sqrt(c->covariance(0, 0))},
+          {"turn_scale", c->turn},
+          {"turn_scale_sigma", std::sqrt(c->covariance(1, 1))},
+          {"drift_deg_per_m", c->drift_rad_per_m * 180.0 / M_PI},
+          {"drift_sigma_deg_per_m", std::sqrt(c->covariance(2, 2)) * 180.0 / M_PI}};
+    }
     if (r.planar && !r.planar->repairs.empty()) {
       s["poses"]["loop_closure"]["online_repairs"] = repairSummary(r.planar->repairs);
     }

@@ -244,6 +244,9 @@ class RawlogRun {
     if (const poses::LoopClosingBackEnd* loops = stage.loops()) {
       result_.poses.loops = loops->stats();
       result_.poses.closures = loops->closures();
+      if (loops->odometryModel().calibration().edges > 0) {
+        result_.poses.odometry_calibration = loops->odometryModel().calibration();
+      }
       result_.poses.corrections = stage.corrections();
       result_.poses.graph = loops->graph();
     }

@@ -72,11 +72,12 @@ void LoopClosingStage::sync() {
   }
 }
 
-void LoopClosingStage::onScan(double t, const mrpt::obs::CObservation2DRangeScan::Ptr& scan) {
+void LoopClosingStage::onScan(double t, const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
+                              const std::optional<OdometrySample>& odometry) {
   sync();
   const ScanAnchor before = back_end_.anchor();
   const bool closed =
-      back_end_.addScan(t, pose2(tracker_.currentPose()), scanPointsInRobotFrame(*scan));
+      back_end_.addScan(t, pose2(tracker_.currentPose()), scanPointsInRobotFrame(*scan), odometry);
   // A new keyframe or a refined scan: this scan's sample is the new anchor.
   const ScanAnchor& after = back_end_.anchor();
   if (after.scan != before.scan && !sample_anchor_.empty()) {

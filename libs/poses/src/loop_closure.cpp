@@ -76,11 +76,15 @@ bool LoopClosureOptions::validate(std::string* why) const {
     *why = "keyframe_refine_map_path_m must be a finite number > 0";
     return false;
   }
-  return refine.validate(why);
+  return refine.validate(why) && odometry.validate(why) && path.validate(why);
 }
 
 LoopClosingBackEnd::LoopClosingBackEnd(LoopClosureOptions options, ScanMatchOptions match)
-    : options_(options), match_options_(match), graph_(PoseGraphOptions{options.loop_loss_scale}) {}
+    : options_(options),
+      match_options_(match),
+      graph_(PoseGraphOptions{options.loop_loss_scale}),
+      odometry_model_(options.odometry),
+      path_constraints_(options.path, options.refine) {}
 
 bool LoopClosingBackEnd::isKeyframe(const Pose2& front) const {
   if (keyframes_.empty()) {
@@ -92,8 +96,8 @@ bool LoopClosingBackEnd::isKeyframe(const Pose2& front) const {
              mrpt::DEG2RAD(options_.keyframe_angle_deg);
 }
 
-bool LoopClosingBackEnd::addScan(double t, const Pose2& front,
-                                 std::vector<Eigen::Vector2d> points) {
+bool LoopClosingBackEnd::addScan(double t, const Pose2& front, std::vector<Eigen::Vector2d> points,
+                                 const std::optional<OdometrySample>& odometry) {
   if (have_front_) {
     path_m_ += distance(last_front_, front);
   }
@@ -105,11 +109,11 @@ bool LoopClosingBackEnd::addScan(double t, const Pose2& front,
   }
   if (!isKeyframe(front)) {
     if (options_.refine_keyframes && options_.refine_scans) {
-      refineScan(points, front);
+      refineScan(points, front, odometry);
     }
     return false;
   }
-  addKeyframe(t, front, std::move(points));
+  addKeyframe(t, front, std::move(points), odometry);
   return options_.enabled && closeLoop();
 }
 
@@ -126,8 +130,8 @@ Pose2 LoopClosingBackEnd::corrected(const ScanAnchor& anchor, const Pose2& front
 // motion since, held to the front end's pose relative to the keyframe (a
 // prior relative to the last anchor instead lets errors add up from scan
 // to scan: doc/poses.md); if refined, it is the new anchor.
-void LoopClosingBackEnd::refineScan(const std::vector<Eigen::Vector2d>& points,
-                                    const Pose2& front) {
+void LoopClosingBackEnd::refineScan(const std::vector<Eigen::Vector2d>& points, const Pose2& front,
+                                    const std::optional<OdometrySample>& odometry) {
   // Not against the first keyframe's scan alone: at 5 cm range noise the
   // scans after it were pulled back towards it, 0.6 m in 1.2 s (measured
   // on the default world, doc/poses.md); from two keyframes on they were
@@ -136,9 +140,9 @@ void LoopClosingBackEnd::refineScan(const std::vector<Eigen::Vector2d>& points,
     return;
   }
   const Pose2 guess = compose(anchor_.in_keyframe, between(anchor_.front, front));
-  const Pose2& key_front = keyframes_[anchor_.keyframe].front;
-  const RefinedPose r = refinePose(recentMap(), points, guess, between(key_front, front),
-                                   odometryInformation(key_front, front), options_.refine);
+  const MotionPrior prior = motionPrior(keyframes_[anchor_.keyframe], front, odometry);
+  const RefinedPose r =
+      refinePose(recentMap(), points, guess, prior.mean, prior.information, options_.refine);
   if (r.refined) {
     ++stats_.refined_scans;
     anchor_ = {scans_, anchor_.keyframe, front, r.pose};
@@ -161,8 +165,9 @@ const LineMap& LoopClosingBackEnd::recentMap() {
 }
 
 void LoopClosingBackEnd::addKeyframe(double t, const Pose2& front,
-                                     std::vector<Eigen::Vector2d> points) {
-  Keyframe k{t, front, path_m_, std::move(points)};
+                                     std::vector<Eigen::Vector2d> points,
+                                     const std::optional<OdometrySample>& odometry) {
+  Keyframe k{t, front, path_m_, std::move(points), odometry};
   const std::size_t id = keyframes_.size();
   anchor_ = {scans_, id, front, Pose2{}};
   if (id == 0) {
@@ -176,7 +181,7 @@ void LoopClosingBackEnd::addKeyframe(double t, const Pose2& front,
   e.to = id;
   e.measurement = between(keyframes_[id - 1].front, front);
   e.information = odometryInformation(keyframes_[id - 1].front, front);
-  if (options_.refine_keyframes && refineEdge(k.points, e)) {
+  if (options_.refine_keyframes && refineEdge(keyframes_[id - 1], k, e)) {
     ++stats_.refined_edges;
   }
   // Its estimate: the newest keyframe's pose, moved by the edge.
@@ -185,20 +190,52 @@ void LoopClosingBackEnd::addKeyframe(double t, const Pose2& front,
   ++stats_.keyframes;
   graph_.addEdge(e);
   recent_map_.reset();
+  if (options_.refine_keyframes) {
+    path_constraints_.add(id, keyframes_, graph_);
+  }
 }
 
-// The edge from the newest keyframe to a new one whose points are `points`,
-// refined against the keyframes of the last refine_map_path_m of path
-// (placed with the graph's poses, in the newest keyframe's frame).
-bool LoopClosingBackEnd::refineEdge(const std::vector<Eigen::Vector2d>& points, PoseEdge& edge) {
-  const RefinedPose r =
-      refinePose(recentMap(), points, edge.measurement, edge.information, options_.refine);
-  if (!r.refined) {
-    return false;
+// The edge from the newest keyframe `from` to a new one `to`, refined
+// against the keyframes of the last refine_map_path_m of path (placed with
+// the graph's poses, in the newest keyframe's frame), started from the
+// front end's relative pose and held to the motion prior; unrefined, the
+// edge is the prior. With calibrated odometry, the points' own estimate of
+// the motion refits the calibration.
+bool LoopClosingBackEnd::refineEdge(const Keyframe& from, const Keyframe& to, PoseEdge& edge) {
+  const MotionPrior prior = motionPrior(from, to.front, to.odometry);
+  const RefinedPose r = refinePose(recentMap(), to.points, edge.measurement, prior.mean,
+                                   prior.information, options_.refine);
+  edge.measurement = r.refined ? r.pose : prior.mean;
+  edge.information = r.information;  // the prior's when not refined
+  if (usesOdometry(from, to.odometry)) {
+    // The edge is added next (addKeyframe): its index is the graph's size.
+    OdometryEdges::Term term{graph_.edges().size(), *from.odometry, *to.odometry, prior.mean,
+                             Eigen::Matrix3d::Zero()};
+    if (r.refined) {
+      term.data = dataEstimate(r.pose, r.data_information, prior.mean, prior.information);
+      term.data_information = r.data_information;
+      odometry_model_.addEdge(term.from, term.to, term.data,
+                              options_.refine.information_scale * r.data_information);
+    }
+    odometry_edges_.add(term);
   }
-  edge.measurement = r.pose;
-  edge.information = r.information;
-  return true;
+  return r.refined;
+}
+
+bool LoopClosingBackEnd::usesOdometry(const Keyframe& from,
+                                      const std::optional<OdometrySample>& odometry) const {
+  return options_.odometry.enabled && options_.refine_keyframes && from.odometry && odometry;
+}
+
+// What a refinement from keyframe `from` to the front-end pose `front` is
+// held to: the calibrated odometry (odometry_model.h) when there is
+// odometry, otherwise the front end's relative pose.
+MotionPrior LoopClosingBackEnd::motionPrior(const Keyframe& from, const Pose2& front,
+                                            const std::optional<OdometrySample>& odometry) const {
+  if (usesOdometry(from, odometry)) {
+    return odometry_model_.prior(*from.odometry, *odometry);
+  }
+  return {between(from.front, front), odometryInformation(from.front, front)};
 }
 
 // What the front end's relative pose is worth: odometry_sigma_fraction of
@@ -325,7 +362,34 @@ bool LoopClosingBackEnd::finish() {
   while (!pending_.empty()) {
     moved = applyOldest() || moved;
   }
-  return moved;
+  return finalSolve() || moved;
+}
+
+// At the end of the input: the keyframe edges held to the odometry made
+// again with the calibration fitted by then (the early edges had a cruder
+// one), the path constraints added, and the graph solved with them (or,
+// with neither loops nor constraints, the chain composed again).
+bool LoopClosingBackEnd::finalSolve() {
+  if (odometry_edges_.empty() && path_constraints_.edges().empty()) {
+    return false;
+  }
+  odometry_edges_.remake(odometry_model_, options_.refine.information_scale, graph_);
+  for (const PoseEdge& e : path_constraints_.edges()) {
+    graph_.addEdge(e);
+  }
+  stats_.path_constraints = path_constraints_.edges().size();
+  stats_.path_constraints_rejected = path_constraints_.rejected();
+  if (graph_.hasLoops()) {
+    const auto t0 = Clock::now();
+    graph_.optimize();
+    stats_.solve_s += secondsSince(t0);
+  } else {
+    for (const PoseEdge& e : graph_.edges()) {
+      graph_.setNode(e.to, compose(graph_.node(e.from), e.measurement));
+    }
+  }
+  recent_map_.reset();
+  return true;
 }
 
 // Solves the graph with the loop; keeps it only if the graph agrees with it.

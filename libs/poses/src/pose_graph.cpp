@@ -3,6 +3,7 @@
 #include <ceres/ceres.h>
 
 #include <Eigen/Cholesky>
+#include <algorithm>
 #include <array>
 #include <memory>
 
@@ -95,9 +96,19 @@ void PoseGraph::addEdge(const PoseEdge& edge) {
   edges_.push_back(edge);
 }
 
+void PoseGraph::setEdge(std::size_t index, const Pose2& measurement,
+                        const Eigen::Matrix3d& information) {
+  edges_.at(index).measurement = measurement;
+  edges_.at(index).information = information;
+}
+
+bool PoseGraph::hasLoops() const {
+  return std::any_of(edges_.begin(), edges_.end(), [](const PoseEdge& e) { return e.loop; });
+}
+
 void PoseGraph::removeLastLoopEdge() {
   for (auto it = edges_.rbegin(); it != edges_.rend(); ++it) {
-    if (it->loop) {
+    if (it->loop && !it->path) {
       edges_.erase(std::next(it).base());
       return;
     }

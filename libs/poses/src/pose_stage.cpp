@@ -78,9 +78,27 @@ void PoseStage::processPoseScan(const mrpt::obs::CObservation::Ptr& obs) {
   tracker_->processObservation(obs, false);
   if (slam_) {
     if (const auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(obs)) {
-      slam_->onScan(mrpt::Clock::toDouble(obs->timestamp), scan);
+      slam_->onScan(mrpt::Clock::toDouble(obs->timestamp), scan, odometry_);
     }
   }
+}
+
+// The odometry for the pose graph: the readings (observations-only format,
+// absolute) or the increments (sf format) the gate passed, with the path
+// they drove. A scan uses the last one before it (the logs seen write the
+// reading of a scan's time just before it).
+void PoseStage::odometryReading(const TPose3D& reading) {
+  const Pose2 p{reading.x, reading.y, reading.yaw};
+  const double path =
+      odometry_ ? odometry_->path_m + std::hypot(p.x - odometry_->pose.x, p.y - odometry_->pose.y)
+                : 0.0;
+  odometry_ = OdometrySample{p, path};
+}
+
+void PoseStage::odometryIncrement(const mrpt::poses::CPose2D& step) {
+  const OdometrySample last = odometry_.value_or(OdometrySample{});
+  odometry_ = OdometrySample{compose(last.pose, {step.x(), step.y(), step.phi()}),
+                             last.path_m + std::hypot(step.x(), step.y())};
 }
 
 void PoseStage::processOdometry(const mrpt::obs::CObservation::Ptr& obs) {
@@ -93,6 +111,7 @@ void PoseStage::processOdometry(const mrpt::obs::CObservation::Ptr& obs) {
   if (!used) {
     return;
   }
+  odometryReading(*used);
   if (same(*used, reading)) {
     tracker_->processObservation(obs, true);
     return;
@@ -141,6 +160,12 @@ mrpt::obs::CActionCollection::Ptr PoseStage::gatedAction(
     timed->timestamp = mrpt::Clock::fromDouble(t);
     out->insertPtr(timed);
   }
+  // The increment MRPT's ICP takes (processActionObservation) is also the
+  // pose graph's.
+  if (const auto best = out->getBestMovementEstimation()) {
+    odometryIncrement(best->poseChange ? best->poseChange->getMeanVal()
+                                       : best->rawOdometryIncrementReading);
+  }
   return out;
 }
 
@@ -162,7 +187,7 @@ void PoseStage::processFrame(const input::InputStep& step) {
     for (const auto& item : step.observations) {
       const auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(item.obs);
       if (item.roles.pose_laser && scan) {
-        slam_->onScan(frame_t, scan);
+        slam_->onScan(frame_t, scan, odometry_);
       }
     }
   }

@@ -83,13 +83,15 @@ void writeTumFile(const std::filesystem::path& path, const Trajectory& trajector
 }
 
 void writeGraphFile(const std::filesystem::path& path, const PoseGraph& graph) {
-  std::size_t loops = 0;
+  std::size_t loops = 0, constraints = 0;
   for (const PoseEdge& e : graph.edges()) {
-    loops += e.loop ? 1 : 0;
+    constraints += e.path ? 1 : 0;
+    loops += e.loop && !e.path ? 1 : 0;
   }
   writeFileAtomically(path, [&](std::ostream& out) {
     out << "# planar-mapper pose graph: " << graph.size() << " keyframes (optimised poses), "
-        << graph.edges().size() - loops << " odometry edges, " << loops << " loop closures\n";
+        << graph.edges().size() - loops - constraints << " odometry edges, " << loops
+        << " loop closures, " << constraints << " path constraints\n";
     out << "# VERTEX_SE2 id x y theta / EDGE_SE2 from to dx dy dtheta i_xx i_xy i_xt i_yy i_yt "
            "i_tt (m, rad)\n";
     char buf[512];

@@ -200,6 +200,7 @@ RefinedPose refinePose(const LineMap& map, const std::vector<Eigen::Vector2d>& q
   out.pose = x;
   out.matches = l.matches;
   out.information = options.information_scale * l.h + prior;
+  out.data_information = l.h;
   return out;
 }
 

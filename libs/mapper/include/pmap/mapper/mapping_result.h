@@ -77,6 +77,8 @@ struct PoseResult {
   std::vector<poses::LoopClosure> closures;      ///< the accepted loop closures, in order
   std::size_t corrections = 0;                   ///< loop closures that rewrote the past trajectory
   std::optional<poses::PoseGraph> graph;         ///< the optimised pose graph (loop closure)
+  /// The wheel odometry's calibration (loop closure with calibrated odometry).
+  std::optional<poses::OdometryCalibration> odometry_calibration;
   /// The pose laser's grid and simple map from the final poses ([Output]
   /// laser_maps; absent with --poses FILE or without pose-laser scans).
   std::optional<poses::LaserMaps> laser_maps;

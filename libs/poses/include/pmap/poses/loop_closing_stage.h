@@ -34,8 +34,10 @@ class LoopClosingStage {
  public:
   LoopClosingStage(LoopClosureOptions options, IcpPoseTracker& tracker);
 
-  /// After the tracker took the pose-laser scan `scan` at time `t`.
-  void onScan(double t, const mrpt::obs::CObservation2DRangeScan::Ptr& scan);
+  /// After the tracker took the pose-laser scan `scan` at time `t`; the
+  /// wheel odometry's last reading then (none: the log has no odometry).
+  void onScan(double t, const mrpt::obs::CObservation2DRangeScan::Ptr& scan,
+              const std::optional<OdometrySample>& odometry = std::nullopt);
   /// After every input step: the corrected trajectory follows the tracker's.
   void sync();
   /// At the end of the input: a loop search still pending is applied.

@@ -29,24 +29,21 @@
 #include <deque>
 #include <future>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "pmap/poses/free_space.h"
+#include "pmap/poses/keyframe.h"
 #include "pmap/poses/loop_closure_options.h"
 #include "pmap/poses/loop_search.h"
+#include "pmap/poses/odometry_model.h"
+#include "pmap/poses/path_constraints.h"
 #include "pmap/poses/pose_graph.h"
 #include "pmap/poses/scan_matcher.h"
 #include "pmap/poses/scan_refiner.h"
 
 namespace pmap::poses {
-
-struct Keyframe {
-  double t = 0;                         ///< s
-  Pose2 front;                          ///< the front end's pose (its own frame)
-  double path_m = 0;                    ///< front-end path length up to here
-  std::vector<Eigen::Vector2d> points;  ///< the pose laser's points, robot frame
-};
 
 /// Where the scans after a keyframe are placed: the last refined scan (or
 /// the keyframe itself), by its front-end pose and its refined pose in the
@@ -81,6 +78,8 @@ struct LoopClosureStats {
   std::size_t rejected_free_space = 0;  ///< the best pose contradicts the beams' free space
   std::size_t rejected_chi2 = 0;        ///< taken out again after solving
   std::size_t accepted = 0;
+  std::size_t path_constraints = 0;           ///< keyframe-to-submap edges in the last solve
+  std::size_t path_constraints_rejected = 0;  ///< matches the graph disagreed with
   double search_s = 0;  ///< wall time of candidate search and matching (worker thread or not)
   double solve_s = 0;   ///< wall time of the graph solves
   double wait_s = 0;    ///< time the front end waited for a worker's search
@@ -90,9 +89,11 @@ class LoopClosingBackEnd {
  public:
   explicit LoopClosingBackEnd(LoopClosureOptions options, ScanMatchOptions match = {});
 
-  /// The front end's pose of a pose-laser scan at `t` and the scan's points
-  /// (robot frame). Returns true when a loop closure moved the graph.
-  bool addScan(double t, const Pose2& front, std::vector<Eigen::Vector2d> points);
+  /// The front end's pose of a pose-laser scan at `t`, the scan's points
+  /// (robot frame) and the wheel odometry at the scan (none: the log has
+  /// none). Returns true when a loop closure moved the graph.
+  bool addScan(double t, const Pose2& front, std::vector<Eigen::Vector2d> points,
+               const std::optional<OdometrySample>& odometry = std::nullopt);
   /// At the end of the input: applies the searches still pending, in
   /// order. Returns true when one of their loop closures moved the graph.
   bool finish();
@@ -111,14 +112,21 @@ class LoopClosingBackEnd {
   const PoseGraph& graph() const { return graph_; }
   const std::vector<LoopClosure>& closures() const { return closures_; }
   const LoopClosureStats& stats() const { return stats_; }
+  /// The odometry's calibration so far (odometry_model.h).
+  const OdometryModel& odometryModel() const { return odometry_model_; }
   const LoopClosureOptions& options() const { return options_; }
 
  private:
   bool isKeyframe(const Pose2& front) const;
-  void addKeyframe(double t, const Pose2& front, std::vector<Eigen::Vector2d> points);
+  void addKeyframe(double t, const Pose2& front, std::vector<Eigen::Vector2d> points,
+                   const std::optional<OdometrySample>& odometry);
   Eigen::Matrix3d odometryInformation(const Pose2& from, const Pose2& to) const;
-  bool refineEdge(const std::vector<Eigen::Vector2d>& points, PoseEdge& edge);
-  void refineScan(const std::vector<Eigen::Vector2d>& points, const Pose2& front);
+  bool usesOdometry(const Keyframe& from, const std::optional<OdometrySample>& odometry) const;
+  MotionPrior motionPrior(const Keyframe& from, const Pose2& front,
+                          const std::optional<OdometrySample>& odometry) const;
+  bool refineEdge(const Keyframe& from, const Keyframe& to, PoseEdge& edge);
+  void refineScan(const std::vector<Eigen::Vector2d>& points, const Pose2& front,
+                  const std::optional<OdometrySample>& odometry);
   const LineMap& recentMap();
   bool closeLoop();
   std::vector<std::size_t> candidates(double radius) const;
@@ -128,6 +136,7 @@ class LoopClosingBackEnd {
   bool apply(const LoopSearchResult& result);
   bool applyOldest();
   bool acceptAfterSolve(const PoseEdge& edge, const ScanMatch& match);
+  bool finalSolve();
 
   LoopClosureOptions options_;
   ScanMatchOptions match_options_;
@@ -148,6 +157,9 @@ class LoopClosingBackEnd {
   /// The keyframes of the last refine_map_path_m in the newest one's frame,
   /// built when first needed after a keyframe or a closure.
   std::unique_ptr<LineMap> recent_map_;
+  OdometryModel odometry_model_;
+  OdometryEdges odometry_edges_;
+  PathConstraints path_constraints_;
 };
 
 }  // namespace pmap::poses

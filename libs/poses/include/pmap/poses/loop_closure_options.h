@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include "pmap/poses/odometry_model.h"
+#include "pmap/poses/path_constraints.h"
 #include "pmap/poses/scan_refiner.h"
 
 namespace pmap::poses {
@@ -42,12 +44,15 @@ struct LoopClosureOptions {
   /// fraction arriving through its free space is below this share of the
   /// same fraction within each side (surfaces seen from behind), [0, 1].
   double min_same_side_ratio = 0.6;
-  double max_chi2 = 11.34;                ///< a loop's e^T I e after solving (3 dof, 99 %)
-  double loop_sigma_m = 0.05;             ///< a loop edge's standard deviation (m)
-  double loop_sigma_deg = 1.0;            ///< ... and in heading (deg)
-  double odometry_sigma_fraction = 0.05;  ///< odometry edges: translation sigma per metre moved
-  double odometry_sigma_deg = 0.5;        ///< odometry edges: heading sigma, plus 5 % of the turn
-  double loop_loss_scale = 1.0;           ///< Cauchy scale of loop edges (whitened)
+  double max_chi2 = 11.34;      ///< a loop's e^T I e after solving (3 dof, 99 %)
+  double loop_sigma_m = 0.05;   ///< a loop edge's standard deviation (m)
+  double loop_sigma_deg = 1.0;  ///< ... and in heading (deg)
+  /// The front end's relative pose as an edge's prior (without calibrated
+  /// odometry): translation sigma per metre moved, heading sigma plus 5 %
+  /// of the turn.
+  double odometry_sigma_fraction = 0.05;
+  double odometry_sigma_deg = 0.5;
+  double loop_loss_scale = 1.0;  ///< Cauchy scale of loop edges (whitened)
   /// 0: each keyframe's search runs when the keyframe is added. N > 0: it
   /// runs on a thread of its own and its result is applied when the keyframe
   /// N keyframes later is added (waiting for it if need be), so the front
@@ -64,6 +69,13 @@ struct LoopClosureOptions {
   /// pose relative to the keyframe).
   bool refine_scans = true;
   ScanRefineOptions refine;
+  /// With refine_keyframes and a log with odometry: keyframe edges and
+  /// scans held to the calibrated wheel odometry instead of the front end's
+  /// relative pose (odometry_model.h).
+  OdometryModelOptions odometry;
+  /// With refine_keyframes: keyframe-to-submap edges along the path, for the
+  /// graph's last solve (path_constraints.h).
+  PathConstraintOptions path;
   bool validate(std::string* why) const;
 };
 

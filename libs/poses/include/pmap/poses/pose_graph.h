@@ -38,6 +38,7 @@ struct PoseEdge {
   Pose2 measurement;                                          ///< pose of `to` in `from`'s frame
   Eigen::Matrix3d information = Eigen::Matrix3d::Identity();  ///< (x, y, theta)
   bool loop = false;                                          ///< robust loss
+  bool path = false;  ///< (with loop) a path constraint, not a loop closure (path_constraints.h)
 };
 
 struct PoseGraphOptions {
@@ -63,6 +64,10 @@ class PoseGraph {
   /// Adds a node at `initial`; returns its index.
   std::size_t addNode(const Pose2& initial);
   void addEdge(const PoseEdge& edge);
+  /// Replaces edge `index`'s measurement and information (same nodes).
+  void setEdge(std::size_t index, const Pose2& measurement, const Eigen::Matrix3d& information);
+  /// Whether any loop edge is in the graph.
+  bool hasLoops() const;
   /// Removes the last loop edge added (a closure refused after solving).
   void removeLastLoopEdge();
 

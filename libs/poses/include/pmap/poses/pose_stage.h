@@ -7,6 +7,7 @@
 
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "pmap/input/observation_source.h"
@@ -59,6 +60,8 @@ class PoseStage {
   void processPoseScan(const mrpt::obs::CObservation::Ptr& obs);
   mrpt::obs::CActionCollection::Ptr gatedAction(const mrpt::obs::CActionCollection::Ptr& action,
                                                 double frame_t);
+  void odometryReading(const mrpt::math::TPose3D& reading);
+  void odometryIncrement(const mrpt::poses::CPose2D& step);
 
   std::unique_ptr<IcpPoseTracker> tracker_;
   std::unique_ptr<LoopClosingStage> slam_;
@@ -67,6 +70,10 @@ class PoseStage {
   double last_action_t_ = std::numeric_limits<double>::quiet_NaN();
   std::size_t actions_timed_by_frame_ = 0;
   std::size_t actions_without_time_ = 0;
+  /// The wheel odometry as the gate passed it: the last reading (or the
+  /// sf-format increments composed) and the path driven, for the pose
+  /// graph's motion prior.
+  std::optional<OdometrySample> odometry_;
 };
 
 }  // namespace pmap::poses

@@ -84,6 +84,9 @@ struct RefinedPose {
   bool refined = false;  ///< false: too few matches, the prior is returned
   Pose2 pose;
   Eigen::Matrix3d information = Eigen::Matrix3d::Zero();  ///< (x, y, theta)
+  /// The points' own Gauss-Newton Hessian at the pose (sum w J^T J /
+  /// sigma^2, unscaled, no prior); zero when not refined.
+  Eigen::Matrix3d data_information = Eigen::Matrix3d::Zero();
   int matches = 0;
   int iterations = 0;
 };
