@@ -49,6 +49,8 @@ std::vector<BadInputCase> iniCases() {
               "loop_closure = true\nodometry_noise_fraction = 0", 1, "odometry noise"),
       iniCase("too_many_path_constraints", "loop_closure = true",
               "loop_closure = true\npath_constraints = 50", 1, "path_constraints"),
+      iniCase("negative_front_map_radius", "loop_closure = true",
+              "loop_closure = true\nfront_map_radius_m = -1", 1, "front_map_radius_m"),
       iniCase("duplicate_key", "kappa = 200", "kappa = 200\nkappa = 300", 1, "duplicate"),
       iniCase("malformed_line", "kappa = 200", "kappa 200", 1, "my.ini:"),
       iniCase("misspelled_mrpt_key", "maxIterations", "maxIteratoins", 1, "maxIterations"),

@@ -166,5 +166,64 @@ TEST(PoseGraph, EdgesAreReplacedAndPathConstraintsAreNotLoops) {
   EXPECT_EQ(g.edges().size(), 3u);
 }
 
+// cost() is the objective Ceres minimises (1/2 the sum of rho(e^T I e)),
+// with the Cauchy loss on robust loop edges only.
+TEST(PoseGraph, CostIsCeresObjective) {
+  PoseGraph g;
+  for (int i = 0; i < 5; ++i) {
+    g.addNode({1.02 * i, 0.01 * i, 0.02 * i});
+    if (i > 0) {
+      g.addEdge(edge(static_cast<std::size_t>(i - 1), static_cast<std::size_t>(i), {1.0, 0, 0}));
+    }
+  }
+  g.addEdge(edge(0, 4, {4.3, 0.2, 0.0}, true));
+  PoseEdge plain = edge(1, 3, {2.1, -0.1, 0.05}, true);
+  plain.robust = false;
+  g.addEdge(plain);
+  double expected = 0;
+  for (const PoseEdge& e : g.edges()) {
+    const double s = g.chi2(e);
+    expected += 0.5 * ((e.loop && e.robust) ? std::log1p(s) : s);  // Cauchy scale 1
+  }
+  EXPECT_NEAR(g.cost(), expected, 1e-12);
+  const PoseGraphResult r = g.optimize();
+  EXPECT_NEAR(g.cost(), r.final_cost, 1e-9 * (1.0 + r.final_cost));
+  g.makeLastEdgeRobust();
+  EXPECT_TRUE(g.edges().back().robust);
+}
+
+// The loop test's innovation (loop_closure.cpp, acceptAfterSolve): the rise
+// of the objective when the graph follows a new loop under a plain cost is
+// e^T (Sigma_chain + Sigma_loop)^-1 e. A straight chain of n edges, each
+// sigma_t in x and y and a heading held tight, gives a relative position
+// covariance of n sigma_t^2 I between its ends.
+TEST(PoseGraph, Item15_TheCostRiseOfALoopIsItsMahalanobisInnovation) {
+  const int n = 20;
+  const double sigma_t = 0.02, sigma_loop = 0.05;
+  PoseGraph g;
+  for (int i = 0; i <= n; ++i) {
+    g.addNode({0.5 * i, 0.0, 0.0});
+    if (i > 0) {
+      PoseEdge e = edge(static_cast<std::size_t>(i - 1), static_cast<std::size_t>(i), {0.5, 0, 0});
+      e.information =
+          Eigen::Vector3d(1 / (sigma_t * sigma_t), 1 / (sigma_t * sigma_t), 1e9).asDiagonal();
+      g.addEdge(e);
+    }
+  }
+  const Eigen::Vector2d offset(0.12, -0.05);  // the loop's error against the chain
+  PoseEdge loop =
+      edge(0, static_cast<std::size_t>(n), {0.5 * n + offset.x(), offset.y(), 0.0}, true);
+  loop.information =
+      Eigen::Vector3d(1 / (sigma_loop * sigma_loop), 1 / (sigma_loop * sigma_loop), 1e9)
+          .asDiagonal();
+  loop.robust = false;
+  const double before = g.cost();
+  g.addEdge(loop);
+  g.optimize();
+  const double innovation = 2.0 * (g.cost() - before);
+  const double expected = offset.squaredNorm() / (n * sigma_t * sigma_t + sigma_loop * sigma_loop);
+  EXPECT_NEAR(innovation, expected, 0.01 * expected);
+}
+
 }  // namespace
 }  // namespace pmap::poses

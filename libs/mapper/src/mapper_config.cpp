@@ -124,6 +124,8 @@ void PosesSection::load(config::SectionReader& r) {
   r.read("path_constraint_max_chi2", l.path.max_chi2);
   r.read("path_constraint_min_along_ratio", l.path.min_along_ratio);
   r.read("path_constraint_max_gap_m", l.path.max_gap_m);
+  r.read("front_map_radius_m", l.front_map_radius_m);
+  r.read("front_map_spacing_m", l.front_map_spacing_m);
   refine::PlanePoseOptions& p = planes;
   r.read("plane_refinement", p.enabled);
   r.read("plane_refine_knot_spacing_m", p.knot_spacing_m);

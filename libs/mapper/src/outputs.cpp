@@ -276,6 +276,7 @@ json summaryJson(const MapperArgs& args, const MappingResult& r, const StageCloc
                                   {"solve_s", l.solve_s},
                                   {"wait_s", l.wait_s},
                                   {"trajectory_rewrites", poses.corrections},
+                                  {"front_map_rebuilds", poses.front_map_rebuilds},
                                   {"structure_scans_moved", points.scans_moved}};
     s["poses"]["loop_closure"]["closures"] = closuresSummary(poses.closures);
     if (const auto& c = poses.odometry_calibration) {

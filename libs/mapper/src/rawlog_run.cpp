@@ -248,6 +248,7 @@ class RawlogRun {
         result_.poses.odometry_calibration = loops->odometryModel().calibration();
       }
       result_.poses.corrections = stage.corrections();
+      result_.poses.front_map_rebuilds = stage.frontMapRebuilds();
       result_.poses.graph = loops->graph();
     }
     const std::string dropped = stage.gate().summary(

@@ -1,5 +1,6 @@
 #include "pmap/poses/icp_pose_tracker.h"
 
+#include <mrpt/maps/CPointsMap.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
@@ -34,6 +35,20 @@ void IcpPoseTracker::recordPose(double t) {
   if (!trajectory_.append(t, currentPose())) {
     ++stats_.non_monotonic;
   }
+}
+
+void IcpPoseTracker::replaceMap(const std::vector<Eigen::Vector2d>& points) {
+  const auto map =
+      impl_->builder.getCurrentlyBuiltMetricMap()->mapByClass<mrpt::maps::CPointsMap>();
+  if (!map) {
+    return;
+  }
+  map->clear();
+  map->reserve(points.size());
+  for (const Eigen::Vector2d& p : points) {
+    map->insertPointFast(static_cast<float>(p.x()), static_cast<float>(p.y()), 0.0f);
+  }
+  map->mark_as_modified();  // its kd-tree is built again when next matched against
 }
 
 void IcpPoseTracker::processObservation(const mrpt::obs::CObservation::Ptr& obs, bool is_odometry) {

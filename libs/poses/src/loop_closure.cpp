@@ -2,6 +2,8 @@
 
 #include <mrpt/core/bits_math.h>
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -70,6 +72,14 @@ bool LoopClosureOptions::validate(std::string* why) const {
   }
   if (search_latency_keyframes < 0 || search_latency_keyframes > 100) {
     *why = "loop_search_latency_keyframes must be in [0, 100]";
+    return false;
+  }
+  if (!(front_map_radius_m >= 0.0) || !std::isfinite(front_map_radius_m)) {
+    *why = "front_map_radius_m must be a finite number >= 0";
+    return false;
+  }
+  if (!(front_map_spacing_m >= 0.0) || !std::isfinite(front_map_spacing_m)) {
+    *why = "front_map_spacing_m must be a finite number >= 0";
     return false;
   }
   if (!(refine_map_path_m > 0.0) || !std::isfinite(refine_map_path_m)) {
@@ -250,6 +260,28 @@ Eigen::Matrix3d LoopClosingBackEnd::odometryInformation(const Pose2& from, const
       .asDiagonal();
 }
 
+std::vector<Eigen::Vector2d> LoopClosingBackEnd::localMap(const Pose2& centre, double radius_m,
+                                                          const Pose2& frame,
+                                                          double spacing_m) const {
+  std::vector<Eigen::Vector2d> out;
+  for (std::size_t k = 0; k < keyframes_.size(); ++k) {
+    if (distance(graph_.node(k), centre) > radius_m) {
+      continue;
+    }
+    const Pose2 to_frame = between(frame, graph_.node(k));
+    const Eigen::Rotation2Dd r(to_frame.theta);
+    const Eigen::Vector2d t(to_frame.x, to_frame.y);
+    const Eigen::Vector2d* last = nullptr;
+    for (const Eigen::Vector2d& p : keyframes_[k].points) {
+      if (last == nullptr || (p - *last).norm() >= spacing_m) {
+        out.push_back(r * p + t);
+        last = &p;
+      }
+    }
+  }
+  return out;
+}
+
 std::vector<std::size_t> LoopClosingBackEnd::candidates(double radius) const {
   const std::size_t k = newest();
   const Pose2& now = graph_.node(k);
@@ -392,18 +424,31 @@ bool LoopClosingBackEnd::finalSolve() {
   return true;
 }
 
-// Solves the graph with the loop; keeps it only if the graph agrees with it.
+// Solves the graph with the loop and keeps it only if the graph can agree
+// with it: the loop's innovation, the rise of the objective when the graph
+// follows it (the loop under a plain quadratic cost while it is tested),
+// 2 (F_after - F_before) = e^T (Sigma_graph + Sigma_loop)^-1 e for linear
+// Gaussian edges (e: the loop's error against the graph's estimate, Sigma_graph
+// the covariance of the two keyframes' relative pose), must be at most
+// max_chi2. Under the robust loss instead, the solve stayed where it was
+// for a true loop after metres of drift as often as it followed it (ACES: a
+// 1.3 m closure refused at chi2 180-390 in one run, accepted at 0.06 in
+// another).
 bool LoopClosingBackEnd::acceptAfterSolve(const PoseEdge& edge, const ScanMatch& match) {
   const auto t0 = Clock::now();
   std::vector<Pose2> before(graph_.size());
   for (std::size_t i = 0; i < graph_.size(); ++i) {
     before[i] = graph_.node(i);
   }
-  graph_.addEdge(edge);
+  const double cost_before = graph_.cost();
+  PoseEdge tested = edge;
+  tested.robust = false;
+  graph_.addEdge(tested);
   graph_.optimize();
+  const double innovation = 2.0 * (graph_.cost() - cost_before);
   const double solve_s = secondsSince(t0);
   stats_.solve_s += solve_s;
-  if (graph_.chi2(edge) > options_.max_chi2) {
+  if (!(innovation <= options_.max_chi2)) {
     graph_.removeLastLoopEdge();
     for (std::size_t i = 0; i < before.size(); ++i) {
       graph_.setNode(i, before[i]);
@@ -411,6 +456,7 @@ bool LoopClosingBackEnd::acceptAfterSolve(const PoseEdge& edge, const ScanMatch&
     ++stats_.rejected_chi2;
     return false;
   }
+  graph_.makeLastEdgeRobust();
   const std::size_t k = edge.to;
   closures_.push_back({edge.from, k, keyframes_[edge.from].t, keyframes_[k].t, match.pose,
                        match.score, distance(before[k], graph_.node(k)), 1000.0 * solve_s});

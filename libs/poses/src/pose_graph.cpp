@@ -5,6 +5,7 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <memory>
 
 #include "pmap/common/error.h"
@@ -124,6 +125,22 @@ double PoseGraph::chi2(const PoseEdge& edge) const {
   return r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
 }
 
+double PoseGraph::cost() const {
+  const double a2 = options_.loop_loss_scale * options_.loop_loss_scale;
+  double sum = 0;
+  for (const PoseEdge& e : edges_) {
+    const double s = chi2(e);
+    sum += (e.loop && e.robust) ? a2 * std::log1p(s / a2) : s;  // Ceres' CauchyLoss
+  }
+  return 0.5 * sum;
+}
+
+void PoseGraph::makeLastEdgeRobust() {
+  if (!edges_.empty()) {
+    edges_.back().robust = true;
+  }
+}
+
 PoseGraphResult PoseGraph::optimize() {
   PoseGraphResult result;
   if (nodes_.size() < 2 || edges_.empty()) {
@@ -142,7 +159,8 @@ PoseGraphResult PoseGraph::optimize() {
   for (const PoseEdge& e : edges_) {
     auto* cost = new ceres::AutoDiffCostFunction<EdgeCost, 3, 2, 1, 2, 1>(
         new EdgeCost{e.measurement, sqrtInformation(e.information)});
-    ceres::LossFunction* loss = e.loop ? new ceres::CauchyLoss(options_.loop_loss_scale) : nullptr;
+    ceres::LossFunction* loss =
+        (e.loop && e.robust) ? new ceres::CauchyLoss(options_.loop_loss_scale) : nullptr;
     problem.AddResidualBlock(cost, loss, t[e.from].data(), &theta[e.from], t[e.to].data(),
                              &theta[e.to]);
   }

@@ -14,28 +14,6 @@ std::uint64_t cellKey(std::int64_t c, std::int64_t r) {
   return (static_cast<std::uint64_t>(c) << 32) ^ (static_cast<std::uint64_t>(r) & 0xffffffffULL);
 }
 
-// Doubles a max-pooling window along one axis of a row-major grid, in
-// place: from the max over [i, i + k) to the max over [i, i + 2k). In
-// ascending order, g[i + k] is still the old value when g[i] is updated.
-void doubleInPlace(std::vector<float>& g, int cols, int rows, int k, bool along_x) {
-  if (along_x) {
-    for (int r = 0; r < rows; ++r) {
-      float* row = &g[static_cast<std::size_t>(r) * cols];
-      for (int c = 0; c + k < cols; ++c) {
-        row[c] = std::max(row[c], row[c + k]);
-      }
-    }
-    return;
-  }
-  for (int r = 0; r + k < rows; ++r) {
-    float* row = &g[static_cast<std::size_t>(r) * cols];
-    const float* below = &g[static_cast<std::size_t>(r + k) * cols];
-    for (int c = 0; c < cols; ++c) {
-      row[c] = std::max(row[c], below[c]);
-    }
-  }
-}
-
 // The query points rotated by theta about the window's centre and placed at
 // its lower corner, in grid cells.
 std::vector<Eigen::Vector2i> cellsAt(const std::vector<Eigen::Vector2d>& query, double theta,
@@ -111,10 +89,9 @@ void ScanMatcher::buildGrid(const std::vector<Eigen::Vector2d>& reference) {
   }
   grid_.x0 = lo.x() - reach - res;
   grid_.y0 = lo.y() - reach - res;
-  grid_.cols = static_cast<int>(std::ceil((hi.x() - lo.x() + 2 * reach) / res)) + 3;
-  grid_.rows = static_cast<int>(std::ceil((hi.y() - lo.y() + 2 * reach) / res)) + 3;
-  grid_.levels.assign(1,
-                      std::vector<float>(static_cast<std::size_t>(grid_.cols) * grid_.rows, 0.0f));
+  const int cols = static_cast<int>(std::ceil((hi.x() - lo.x() + 2 * reach) / res)) + 3;
+  const int rows = static_cast<int>(std::ceil((hi.y() - lo.y() + 2 * reach) / res)) + 3;
+  grid_.levels = PooledGrid(cols, rows);
   const int r = static_cast<int>(std::ceil(reach / res));
   const double inv2s2 = 1.0 / (2.0 * options_.sigma_m * options_.sigma_m);
   // exp(-|c - p|^2 / 2 s^2) = exp(-dx^2 / 2 s^2) exp(-dy^2 / 2 s^2): 2 (2r + 1)
@@ -131,29 +108,21 @@ void ScanMatcher::buildGrid(const std::vector<Eigen::Vector2d>& reference) {
     }
     for (int dr = -r; dr <= r; ++dr) {
       const int rr = pr + dr;
-      if (rr < 0 || rr >= grid_.rows) {
+      if (rr < 0 || rr >= rows) {
         continue;
       }
-      float* row = &grid_.levels[0][static_cast<std::size_t>(rr) * grid_.cols];
       for (int dc = -r; dc <= r; ++dc) {
         const int c = pc + dc;
-        if (c < 0 || c >= grid_.cols) {
+        if (c < 0 || c >= cols) {
           continue;
         }
-        const auto v = static_cast<float>(gx[static_cast<std::size_t>(dc + r)] *
-                                          gy[static_cast<std::size_t>(dr + r)]);
-        row[c] = std::max(row[c], v);
+        grid_.levels.raise(c, rr,
+                           static_cast<float>(gx[static_cast<std::size_t>(dc + r)] *
+                                              gy[static_cast<std::size_t>(dr + r)]));
       }
     }
   }
-  grid_.levels.reserve(static_cast<std::size_t>(options_.levels));
-  for (int h = 1; h < options_.levels; ++h) {
-    const int k = 1 << (h - 1);
-    std::vector<float> next = grid_.levels.back();
-    doubleInPlace(next, grid_.cols, grid_.rows, k, true);
-    doubleInPlace(next, grid_.cols, grid_.rows, k, false);
-    grid_.levels.push_back(std::move(next));
-  }
+  grid_.levels.pool(options_.levels);
 }
 
 // Branch and bound over the translations of one window, all angles at once.

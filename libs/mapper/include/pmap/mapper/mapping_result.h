@@ -76,6 +76,7 @@ struct PoseResult {
   std::optional<poses::LoopClosureStats> loops;  ///< with [Poses] loop_closure = true
   std::vector<poses::LoopClosure> closures;      ///< the accepted loop closures, in order
   std::size_t corrections = 0;                   ///< loop closures that rewrote the past trajectory
+  std::size_t front_map_rebuilds = 0;            ///< the ICP front end's map rebuilt from the graph
   std::optional<poses::PoseGraph> graph;         ///< the optimised pose graph (loop closure)
   /// The wheel odometry's calibration (loop closure with calibrated odometry).
   std::optional<poses::OdometryCalibration> odometry_calibration;

@@ -13,6 +13,7 @@
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CObservation.h>
+#include <Eigen/Core>
 
 #include <memory>
 #include <vector>
@@ -54,6 +55,11 @@ class IcpPoseTracker {
   mrpt::math::TPose3D currentPose() const;
 
   const PoseStats& stats() const { return stats_; }
+
+  /// Replaces the builder's point map with `points` (x, y in the front
+  /// end's own frame, m): the local map the loop-closing stage rebuilds from
+  /// the pose graph (loop_closing_stage.h). The pose estimate is kept.
+  void replaceMap(const std::vector<Eigen::Vector2d>& points);
 
  private:
   void recordPose(double t);

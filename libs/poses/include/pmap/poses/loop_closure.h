@@ -110,6 +110,12 @@ class LoopClosingBackEnd {
 
   const std::vector<Keyframe>& keyframes() const { return keyframes_; }
   const PoseGraph& graph() const { return graph_; }
+  /// The points of the keyframes whose optimised pose lies within
+  /// `radius_m` of `centre` (graph frame), in the frame `frame` (the world
+  /// seen from it), each scan thinned to points at least `spacing_m` apart
+  /// along it: the front end's local map (loop_closing_stage.h).
+  std::vector<Eigen::Vector2d> localMap(const Pose2& centre, double radius_m, const Pose2& frame,
+                                        double spacing_m) const;
   const std::vector<LoopClosure>& closures() const { return closures_; }
   const LoopClosureStats& stats() const { return stats_; }
   /// The odometry's calibration so far (odometry_model.h).

@@ -39,6 +39,9 @@ struct PoseEdge {
   Eigen::Matrix3d information = Eigen::Matrix3d::Identity();  ///< (x, y, theta)
   bool loop = false;                                          ///< robust loss
   bool path = false;  ///< (with loop) a path constraint, not a loop closure (path_constraints.h)
+  /// (with loop) under the robust loss; false while a new loop is tested
+  /// (LoopClosingBackEnd: the graph must follow it fully to be judged).
+  bool robust = true;
 };
 
 struct PoseGraphOptions {
@@ -82,6 +85,12 @@ class PoseGraph {
 
   /// e^T I e of one edge at the current nodes (its squared Mahalanobis norm).
   double chi2(const PoseEdge& edge) const;
+  /// The objective at the current nodes, as Ceres counts it: 1/2 the sum
+  /// over edges of rho(e^T I e), rho the Cauchy loss on robust loop edges
+  /// and the identity elsewhere.
+  double cost() const;
+  /// Puts the last edge under the robust loss (a tested loop, accepted).
+  void makeLastEdgeRobust();
 
  private:
   PoseGraphOptions options_;

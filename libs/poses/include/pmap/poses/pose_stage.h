@@ -47,6 +47,8 @@ class PoseStage {
   /// How many times a loop closure rewrote the past trajectory (0 without
   /// loop closure): scans placed before then must follow (ScanPlacer::follow).
   std::size_t corrections() const { return slam_ ? slam_->corrections() : 0; }
+  /// How many times the front end's map was rebuilt from the pose graph.
+  std::size_t frontMapRebuilds() const { return slam_ ? slam_->frontMapRebuilds() : 0; }
 
   static LoopClosureOptions disabledLoops() {
     LoopClosureOptions o;

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "pmap/poses/pooled_grid.h"
 #include "pmap/poses/pose_graph.h"
 
 namespace pmap::poses {
@@ -77,21 +78,10 @@ class ScanMatcher {
                    const MatchWindow& excluded, double min_score, bool first_only) const;
   struct Grid {
     double x0 = 0, y0 = 0;  ///< lower corner (m)
-    int cols = 0, rows = 0;
-    /// levels[h]: the likelihood max-pooled over [c, c + 2^h) x [r, r + 2^h);
-    /// levels[0] is the likelihood itself.
-    std::vector<std::vector<float>> levels;
-    /// A window [c, c + 2^h) that starts left of (below) the grid still
-    /// overlaps it: its max is that of [0, 2^h), a superset of the overlap.
-    float at(int h, int c, int r) const {
-      const int w = 1 << h;
-      if (c <= -w || r <= -w || c >= cols || r >= rows) {
-        return 0.0f;
-      }
-      c = std::max(c, 0);
-      r = std::max(r, 0);
-      return levels[static_cast<std::size_t>(h)][static_cast<std::size_t>(r) * cols + c];
-    }
+    /// level h: the likelihood max-pooled over [c, c + 2^h) x [r, r + 2^h);
+    /// level 0 is the likelihood itself.
+    PooledGrid levels;
+    float at(int h, int c, int r) const { return levels.at(h, c, r); }
   };
   struct Search;
   void buildGrid(const std::vector<Eigen::Vector2d>& reference);
