@@ -51,6 +51,14 @@ void IcpPoseTracker::replaceMap(const std::vector<Eigen::Vector2d>& points) {
   map->mark_as_modified();  // its kd-tree is built again when next matched against
 }
 
+void IcpPoseTracker::clipMap(double x, double y, double radius_m) {
+  const auto map =
+      impl_->builder.getCurrentlyBuiltMetricMap()->mapByClass<mrpt::maps::CPointsMap>();
+  if (map) {
+    map->clipOutOfRange(mrpt::math::TPoint2D(x, y), static_cast<float>(radius_m));
+  }
+}
+
 void IcpPoseTracker::processObservation(const mrpt::obs::CObservation::Ptr& obs, bool is_odometry) {
   impl_->builder.processObservation(obs);
   if (is_odometry) {

@@ -88,24 +88,30 @@ void LoopClosingStage::onScan(double t, const mrpt::obs::CObservation2DRangeScan
   if (closed) {
     recomputeAll();
   }
-  rebuildFrontMap(closed);
+  updateFrontMap(closed);
 }
 
-// The front end's map from the keyframes within front_map_radius_m of the
-// robot's corrected pose c, placed by the graph and moved into the front
-// end's frame by f (+) c^-1 (f: the front end's pose now), so the robot's own
-// front-end pose stays where it is.
-void LoopClosingStage::rebuildFrontMap(bool closed) {
+// The front end's map (front_map_radius_m > 0): after a closure, rebuilt
+// from the keyframes within the radius of the robot's corrected pose c,
+// placed by the graph and moved into the front end's frame by f (+) c^-1 (f:
+// the front end's pose now), so the robot's own front-end pose stays where
+// it is; otherwise MRPT's own map, trimmed to the radius every quarter of it
+// travelled (doc/poses.md, "The front end's map").
+void LoopClosingStage::updateFrontMap(bool closed) {
   const LoopClosureOptions& o = back_end_.options();
   if (!(o.front_map_radius_m > 0.0) || back_end_.empty()) {
     return;
   }
   const Pose2 f = pose2(tracker_.currentPose());
-  if (!closed && last_rebuild_ &&
-      std::hypot(f.x - last_rebuild_->x, f.y - last_rebuild_->y) < 0.25 * o.front_map_radius_m) {
+  if (!closed && last_update_ &&
+      std::hypot(f.x - last_update_->x, f.y - last_update_->y) < 0.25 * o.front_map_radius_m) {
     return;
   }
-  last_rebuild_ = f;
+  last_update_ = f;
+  if (!closed) {
+    tracker_.clipMap(f.x, f.y, o.front_map_radius_m);
+    return;
+  }
   const Pose2 c = back_end_.corrected(back_end_.anchor(), f);
   const Pose2 frame = compose(c, inverse(f));  // the front end's frame, in the graph's
   tracker_.replaceMap(back_end_.localMap(c, o.front_map_radius_m, frame, o.front_map_spacing_m));

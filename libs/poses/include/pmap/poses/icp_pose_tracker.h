@@ -60,6 +60,10 @@ class IcpPoseTracker {
   /// end's own frame, m): the local map the loop-closing stage rebuilds from
   /// the pose graph (loop_closing_stage.h). The pose estimate is kept.
   void replaceMap(const std::vector<Eigen::Vector2d>& points);
+  /// Drops the builder's map points farther than radius_m from (x, y) (the
+  /// front end's frame, m): MRPT's kd-tree, rebuilt at every insertion, then
+  /// stays the size of the neighbourhood instead of the whole run's.
+  void clipMap(double x, double y, double radius_m);
 
  private:
   void recordPose(double t);

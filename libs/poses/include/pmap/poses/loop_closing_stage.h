@@ -7,13 +7,13 @@
 //   corrected = keyframe's optimised pose (+) anchor's refined pose in the
 //               keyframe's frame (+) (anchor's front pose^-1 (+) front pose).
 // With front_map_radius_m > 0 the front end's point map is rebuilt after
-// every closure (and every quarter radius travelled) from the keyframes near
-// the robot, placed by the optimised graph and seen from the front end's
-// current pose: the map is consistent with the corrected poses around the
-// robot and the front end's pose does not jump (rebuilding it in the graph's
-// frame instead made the ICP snap to the moved map, and the snap entered the
-// next edges as motion that never happened). With 0 the front end keeps
-// MRPT's own global map.
+// every closure from the keyframes near the robot, placed by the optimised
+// graph and seen from the front end's current pose (the map around the
+// robot is consistent with the corrected poses, and the front end's pose
+// does not jump: rebuilding it in the graph's frame instead made the ICP
+// snap to the moved map, and the snap entered the next edges as motion that
+// never happened); between closures it is MRPT's own map, trimmed to the
+// radius. With 0 the front end keeps MRPT's global map.
 #pragma once
 
 #include <mrpt/obs/CObservation2DRangeScan.h>
@@ -51,13 +51,14 @@ class LoopClosingStage {
   /// How many times a loop closure rewrote the past trajectory so far.
   std::size_t corrections() const { return corrections_; }
   const LoopClosingBackEnd& backEnd() const { return back_end_; }
-  /// How many times the front end's map was rebuilt from the graph.
+  /// How many times the front end's map was rebuilt from the graph (once
+  /// per accepted closure).
   std::size_t frontMapRebuilds() const { return front_map_rebuilds_; }
 
  private:
   void recomputeAll();
   TimedPose correctedSample(std::size_t i) const;
-  void rebuildFrontMap(bool closed);
+  void updateFrontMap(bool closed);
 
   IcpPoseTracker& tracker_;
   LoopClosingBackEnd back_end_;
@@ -65,7 +66,8 @@ class LoopClosingStage {
   Trajectory corrected_;
   TimedPose corrected_front_last_;  ///< the tracker's last sample when last synced
   std::size_t corrections_ = 0;
-  std::optional<Pose2> last_rebuild_;  ///< the front end's pose at the last map rebuild
+  std::optional<Pose2>
+      last_update_;  ///< the front end's pose when its map was last trimmed or rebuilt
   std::size_t front_map_rebuilds_ = 0;
 };
 

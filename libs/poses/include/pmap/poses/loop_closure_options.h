@@ -79,12 +79,11 @@ struct LoopClosureOptions {
   /// With refine_keyframes: keyframe-to-submap edges along the path, for the
   /// graph's last solve (path_constraints.h).
   PathConstraintOptions path;
-  /// The ICP front end's point map, rebuilt from the keyframes whose
-  /// optimised pose lies within this distance of the robot (m) after every
-  /// loop closure and every quarter of it travelled; 0: MRPT's own global
-  /// map, never rebuilt (loop_closing_stage.h). 20 m: on ACES 15 / 20 / 30 m
-  /// gave the same relation errors within 4 mm, and run times of 25 / 27 /
-  /// 32 s against 43 s with MRPT's map (doc/poses.md).
+  /// The ICP front end's point map keeps the points within this distance
+  /// of the robot (m), trimmed every quarter of it travelled, and is rebuilt
+  /// after every accepted loop from the keyframes within it, placed by the
+  /// optimised graph (loop_closing_stage.h); 0: MRPT's own global map, never
+  /// trimmed nor rebuilt. 20 m: doc/poses.md, "The front end's map".
   double front_map_radius_m = 20.0;
   /// The rebuilt map's points: at least this far apart along their scan (m;
   /// MRPT's minDistBetweenLaserPoints does the same for the scans it inserts).
