@@ -38,6 +38,8 @@ std::vector<BadInputCase> iniCases() {
       iniCase("unparsable_value", "kappa = 200", "kappa = abc", 1, "kappa"),
       iniCase("value_with_unit", "sigma_m = 0.02", "sigma_m = 2cm", 1, "sigma_m"),
       iniCase("nan_value", "sigma_m = 0.02", "sigma_m = nan", 1, "sigma_m"),
+      iniCase("sigma_neither_number_nor_auto", "sigma_m = 0.02", "sigma_m = automatic", 1,
+              "not a number or auto"),
       iniCase("inf_value", "z_max_m = 30.0", "z_max_m = inf", 1, "z_max_m"),
       iniCase("negative_size", "sigma_m = 0.02", "sigma_m = -0.02", 1, "sigma_m"),
       iniCase("integer_overflow", "min_support = 60", "min_support = 99999999999", 1,

@@ -59,6 +59,44 @@ TEST(OnlineEm, DefaultWorldIcpPosesCloseToOffline) {
   expectCloseToOffline(false);
 }
 
+// sigma_m = auto (issue 16): the online EM waits for its first measurements,
+// estimates the laser's noise from them and maps as well as with the given
+// sigma. The simulator's range noise is 2 cm along the beam; across a wall
+// that is 2 cm times the cosine of the incidence, so the estimate is at
+// most about 2 cm (measured: 1.83 cm).
+TEST(OnlineEm, Item16_SigmaAutoEstimatesTheNoiseAndMapsAsWell) {
+  const fs::path dir = testing::freshTestDir("online_sigma_auto");
+  const fs::path config = fs::path(PMAP_SOURCE_DIR) / "config";
+  std::ifstream in(config / "default.ini");
+  std::string text(std::istreambuf_iterator<char>(in), {});
+  const std::size_t at = text.find("\nsigma_m = 0.02");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, std::string("\nsigma_m = 0.02").size(), "\nsigma_m = auto #");
+  fs::copy_file(config / "icp.ini", dir / "icp.ini", fs::copy_options::overwrite_existing);
+  std::ofstream(dir / "auto.ini") << text;
+  const fs::path out = dir / "map";
+  ASSERT_EQ(testing::runMain(&planarMapperMain, "planar-mapper",
+                             {"--config", (dir / "auto.ini").string(), "--rawlog",
+                              (kSim / "default-obs.rawlog").string(), "--poses",
+                              (kSim / "default-obs.poses.txt").string(), "--no-textures", "--out",
+                              out.string(), "-q"}),
+            0);
+  std::ifstream summary_in(out / "summary.json");
+  const json summary = json::parse(summary_in);
+  const json& e = summary["sigma_estimate"];
+  ASSERT_TRUE(e["estimated"].get<bool>());
+  EXPECT_LE(e["sigma_m"].get<double>(), 0.021);
+  EXPECT_GE(e["sigma_m"].get<double>(), 0.01);
+  EXPECT_EQ(e["samples"], 2000);
+  const Mapped fixed = mapDefault("online", true, "online_sigma_fixed");
+  EXPECT_NEAR(summary["explained_fraction"].get<double>(),
+              fixed.summary["explained_fraction"].get<double>(), 0.01);
+  // every placed scan still went through the EM, the waiting ones included
+  EXPECT_EQ(summary["iterations"], summary["scans"]);
+  const json eval = eval::evaluateMap({out, kSim / "default-obs.gt.json", {}, true});
+  EXPECT_EQ(eval["matched_surfaces"], eval["gt_surfaces"]) << eval["unmatched"].dump();
+}
+
 TEST(OnlineEm, SnapshotsAreWrittenEveryNScans) {
   const fs::path out = testing::freshTestDir("online_snapshots");
   ASSERT_EQ(testing::runMain(&planarMapperMain, "planar-mapper",

@@ -168,6 +168,26 @@ void SectionReader::read(const std::string& key, std::string& value) {
   }
 }
 
+void SectionReader::readNumberOrAuto(const std::string& key, double& value, bool& is_auto) {
+  const IniValue* v = lookup(key);
+  if (v == nullptr) {
+    record(key, is_auto ? "auto" : formatDouble(value), true);
+    return;
+  }
+  if (toLower(trim(v->value)) == "auto") {
+    is_auto = true;
+    record(key, "auto", false);
+    return;
+  }
+  const auto parsed = parseDouble(v->value);
+  if (!parsed) {
+    return parseError(key, *v, "not a number or auto");
+  }
+  value = *parsed;
+  is_auto = false;
+  record(key, v->value, false);
+}
+
 void SectionReader::read(const std::string& key, std::vector<std::string>& value) {
   if (const IniValue* v = lookup(key)) {
     value = splitList(v->value);

@@ -24,6 +24,8 @@ bool PlanarEmOptions::validate(std::string* why) const {
   if (!positive(z_max_m) || z_max_m <= 3.0 * sigma_m) {
     return fail(why, "z_max_m must be > 3 * sigma_m");
   }
+  if (auto_sigma_points < 100)
+    return fail(why, "auto_sigma_points must be >= 100");
   if (!(std::isfinite(kappa) && kappa >= 0.0))
     return fail(why, "kappa must be >= 0");
   if (selection_interval < 1)

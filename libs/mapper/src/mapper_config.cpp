@@ -155,7 +155,8 @@ bool OutputOptions::validate(std::string* why) const {
 }
 
 void PlanarEmSection::load(config::SectionReader& r) {
-  r.read("sigma_m", em.sigma_m);
+  r.readNumberOrAuto("sigma_m", em.sigma_m, em.sigma_auto);
+  r.read("auto_sigma_points", em.auto_sigma_points);
   r.read("z_max_m", em.z_max_m);
   r.read("kappa", em.kappa);
   r.read("selection_interval", em.selection_interval);

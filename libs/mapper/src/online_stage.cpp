@@ -13,10 +13,57 @@ namespace pmap::mapper {
 
 OnlineStage::OnlineStage(const em::PlanarEmOptions& em, const em::OnlineEmOptions& online,
                          std::filesystem::path out_dir, int snapshot_every)
-    : em_(em, online), out_dir_(std::move(out_dir)), snapshot_every_(snapshot_every) {}
+    : options_(em),
+      online_options_(online),
+      out_dir_(std::move(out_dir)),
+      snapshot_every_(snapshot_every) {
+  if (!em.sigma_auto) {
+    em_.emplace(em, online);
+  }
+}
 
 void OnlineStage::addScan(const points::PointMap& map, std::size_t record) {
   throwIfInterrupted();  // once per scan: SIGINT / SIGTERM stop the run here
+  if (em_) {
+    feed(map, record);
+    return;
+  }
+  waiting_.push_back(record);
+  if (map.size() >= static_cast<std::size_t>(options_.auto_sigma_points)) {
+    start(map);
+  }
+}
+
+void OnlineStage::finish(const points::PointMap& map) {
+  if (!em_) {
+    start(map);
+  }
+}
+
+// sigma_m = auto: estimated from the measurements placed so far (when there
+// are too few for it, or the estimate is not a valid sigma_m, the configured
+// sigma_m stays), then the EM takes the waiting scans.
+void OnlineStage::start(const points::PointMap& map) {
+  const auto t0 = std::chrono::steady_clock::now();
+  sigma_estimate_ = em::estimateRangeSigma(map.xyz());
+  em::PlanarEmOptions o = options_;
+  if (sigma_estimate_->estimated) {
+    o.sigma_m = sigma_estimate_->sigma_m;
+    std::string why;
+    if (!o.validate(&why)) {
+      o.sigma_m = options_.sigma_m;
+      sigma_estimate_->estimated = false;
+    }
+  }
+  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  em_.emplace(o, online_options_);
+  for (const std::size_t record : waiting_) {
+    feed(map, record);
+  }
+  waiting_.clear();
+}
+
+void OnlineStage::feed(const points::PointMap& map, std::size_t record) {
   const points::ScanRecord& s = map.scans()[record];
   const std::vector<em::GridKey> keys = keyer_.keysOf(map, s);
   const std::vector<Eigen::Vector3d> pts(
@@ -24,13 +71,13 @@ void OnlineStage::addScan(const points::PointMap& map, std::size_t record) {
       map.xyz().begin() + static_cast<std::ptrdiff_t>(s.first_point + s.num_points));
   const auto t0 = std::chrono::steady_clock::now();
   OnlineRecord r;
-  r.update = em_.addScan(pts, keys);
+  r.update = em_->addScan(pts, keys);
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   seconds_ += secs;
   r.scan = s.index;
   r.em_ms = 1000.0 * secs;
-  r.surfaces = em_.surfaceCount();
-  r.points = em_.points();
+  r.surfaces = em_->surfaceCount();
+  r.points = em_->points();
   history_.push_back(r);
   if (snapshot_every_ > 0 && history_.size() % static_cast<std::size_t>(snapshot_every_) == 0) {
     writeSnapshot(map);
@@ -38,12 +85,16 @@ void OnlineStage::addScan(const points::PointMap& map, std::size_t record) {
 }
 
 void OnlineStage::moveScans(const points::PointMap& map, const std::vector<std::size_t>& moved) {
+  if (!em_) {
+    return;  // the waiting scans go to the EM from where they are when it starts
+  }
   OnlineRepair repair;
   std::vector<std::int32_t> indices;
   std::vector<Eigen::Vector3d> positions;
   for (const std::size_t record : moved) {
     const points::ScanRecord& s = map.scans()[record];
-    for (std::size_t i = s.first_point; i < s.first_point + s.num_points && i < em_.points(); ++i) {
+    for (std::size_t i = s.first_point; i < s.first_point + s.num_points && i < em_->points();
+         ++i) {
       indices.push_back(static_cast<std::int32_t>(i));  // the EM's order is the map's (addScan)
       positions.push_back(map.xyz()[i]);
     }
@@ -53,7 +104,7 @@ void OnlineStage::moveScans(const points::PointMap& map, const std::vector<std::
     return;
   }
   const auto t0 = std::chrono::steady_clock::now();
-  repair.update = em_.movePoints(indices, positions);
+  repair.update = em_->movePoints(indices, positions);
   repair.ms = 1000.0 * std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   seconds_ += repair.ms / 1000.0;
   repair.points = indices.size();
@@ -64,9 +115,9 @@ void OnlineStage::writeSnapshot(const points::PointMap& map) const {
   const std::filesystem::path file =
       out_dir_ / products::OutputLayout::snapshotFile(history_.size());
   ensureWritableDirectory(file.parent_path());
-  const em::PlanarMap m = em_.map();
+  const em::PlanarMap m = em_->map();
   std::vector<Eigen::Vector3d> pts(map.xyz().begin(),
-                                   map.xyz().begin() + static_cast<std::ptrdiff_t>(em_.points()));
+                                   map.xyz().begin() + static_cast<std::ptrdiff_t>(em_->points()));
   products::writeMapVrml(
       file, products::buildMapModel(m, pts, {}),
       "planar-mapper online map after " + std::to_string(history_.size()) + " structure scans");

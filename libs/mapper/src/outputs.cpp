@@ -324,6 +324,13 @@ json summaryJson(const MapperArgs& args, const MappingResult& r, const StageCloc
     s["mode_note"] = r.mode_note;
   }
   s["warnings"] = r.warnings;
+  if (const auto& e = r.sigma_estimate) {
+    s["sigma_estimate"] = {{"sigma_m", e->sigma_m},
+                           {"estimated", e->estimated},
+                           {"samples", e->samples},
+                           {"p25_m", e->p25_m},
+                           {"p75_m", e->p75_m}};
+  }
   s["pose_per_scan_ms"] = percentiles(poses.step_ms);
   if (r.planar) {
     addPlanarMap(*r.planar, points.raw_triangles.size(), s);

@@ -81,6 +81,26 @@ void runRefinement(const MapperConfig& config, const MapperArgs& args,
   progress.finish(planar.refine->message);
 }
 
+// sigma_m = auto for the offline EM: estimated from all the placed points
+// (noise_estimate.h). Too few points, or an estimate that is no valid
+// sigma_m (z_max_m must exceed 3 sigma), keep the configured value.
+void resolveAutoSigma(MapperConfig& config, StageClock& clock, MappingResult& result) {
+  em::PlanarEmOptions& em = config.planar_em.em;
+  if (!em.sigma_auto) {
+    return;
+  }
+  auto in_em = clock.enter(Stage::kEm);
+  result.sigma_estimate = em::estimateRangeSigma(result.points.map.xyz());
+  em::PlanarEmOptions o = em;
+  o.sigma_m = result.sigma_estimate->sigma_m;
+  std::string why;
+  if (result.sigma_estimate->estimated && o.validate(&why)) {
+    em.sigma_m = o.sigma_m;
+  } else {
+    result.sigma_estimate->estimated = false;
+  }
+}
+
 // The offline EM over the points as they are placed now.
 void mapOffline(const MapperConfig& config, const MapperArgs& args, StageClock& clock,
                 MappingResult& result, std::optional<points::NeighbourGraph>& graph) {
@@ -154,18 +174,22 @@ RunKind kindAfterPoints(const MapperArgs& args, const MappingResult& result) {
 
 }  // namespace
 
-MappingResult runPipeline(const MapperConfig& config, const MapperArgs& args, StageClock& clock,
+MappingResult runPipeline(const MapperConfig& given, const MapperArgs& args, StageClock& clock,
                           LiveView* live) {
   MappingResult result;
   if (!args.cloud.empty()) {
     result = runCloud(args, clock);
   } else {
-    runRawlog(config, args, clock, live, result);
+    runRawlog(given, args, clock, live, result);
   }
   result.kind = kindAfterPoints(args, result);
+  MapperConfig config = given;  // with sigma_m = auto resolved
   std::optional<points::NeighbourGraph> graph;
   if (result.kind == RunKind::kOffline) {
+    resolveAutoSigma(config, clock, result);
     mapOffline(config, args, clock, result, graph);
+  } else if (result.sigma_estimate && result.sigma_estimate->estimated) {
+    config.planar_em.em.sigma_m = result.sigma_estimate->sigma_m;  // the online EM's
   }
   refineMap(config, args, clock, result, graph);
   if (result.kind == RunKind::kOffline && config.plane_poses.enabled &&

@@ -260,6 +260,11 @@ class RawlogRun {
     result_.points.raw_triangles = mesh_.triangles();
     checkUsable();
     if (online_ && !offline_fallback_) {
+      {
+        auto in_em = clock_.enter(Stage::kEm);
+        online_->finish(result_.points.map);
+      }
+      result_.sigma_estimate = online_->sigmaEstimate();
       result_.kind = RunKind::kOnline;
       PlanarResult planar;
       planar.online = online_->history();

@@ -40,6 +40,9 @@ class SectionReader {
   /// Comma-separated list; items are trimmed; an empty value is a list with
   /// one empty item (the empty string is a valid sensor label).
   void read(const std::string& key, std::vector<std::string>& value);
+  /// A number, or the word `auto` (any case): then `is_auto` is set and
+  /// `value` keeps its default.
+  void readNumberOrAuto(const std::string& key, double& value, bool& is_auto);
 
   /// Throws ConfigError "<file:line>: [section] key = value: <rule>".
   [[noreturn]] void fail(const std::string& key, const std::string& rule) const;

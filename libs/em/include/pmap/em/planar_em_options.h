@@ -19,6 +19,13 @@ struct PlanarEmOptions {
   /// Range noise sigma (m), > 0: the laser's specification (2 cm; 5 cm for
   /// the paper's SICK PLS, config/sigma5.ini).
   double sigma_m = 0.02;
+  /// `sigma_m = auto`: sigma_m is estimated from the data before the EM
+  /// runs (noise_estimate.h; the online EM waits for its first
+  /// auto_sigma_points measurements), and reported in summary.json.
+  bool sigma_auto = false;
+  /// With sigma_auto: measurements the online EM collects before it
+  /// estimates sigma and starts, >= 100.
+  int auto_sigma_points = 20000;
   /// Sensor range of the uniform outlier density (m), > 3 sigma: the
   /// laser's maximum range. With sigma it sets the outlier distance
   /// sigma sqrt(L*) (7.2 cm at 2 cm, 16.5 cm at 5 cm).

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "pmap/em/noise_estimate.h"
 #include "pmap/em/offline_em.h"
 #include "pmap/input/observation_source.h"
 #include "pmap/input/structure_points.h"
@@ -127,6 +128,8 @@ struct MappingResult {
   PoseResult poses;
   PointsResult points;
   std::optional<PlanarResult> planar;  ///< kinds online and offline
+  /// `sigma_m = auto`: the estimate the EM and the refinement used.
+  std::optional<em::NoiseEstimate> sigma_estimate;
   /// Why the default (online) mode ran the offline EM instead (empty: it
   /// did not): summary.json "mode_note".
   std::string mode_note;

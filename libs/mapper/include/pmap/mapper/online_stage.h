@@ -6,8 +6,10 @@
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <vector>
 
+#include "pmap/em/noise_estimate.h"
 #include "pmap/em/online_em.h"
 #include "pmap/points/grid_keys.h"
 #include "pmap/points/point_map.h"
@@ -36,6 +38,9 @@ class OnlineStage {
   /// `snapshot_every` > 0 writes OUT_DIR/snapshots/map_NNNNNN.wrl
   /// (products::OutputLayout::snapshotFile) every so many scans; OUT_DIR is
   /// the run's staging folder until the run ends (staged_outputs.h).
+  /// With em.sigma_auto the EM starts once em.auto_sigma_points
+  /// measurements are placed (or at finish()), with sigma_m estimated from
+  /// them (noise_estimate.h); the scans before are fed to it then, in order.
   OnlineStage(const em::PlanarEmOptions& em, const em::OnlineEmOptions& online,
               std::filesystem::path out_dir, int snapshot_every);
 
@@ -49,15 +54,27 @@ class OnlineStage {
   /// O(moved measurements) plus one capped refit per surface touched).
   void moveScans(const points::PointMap& map, const std::vector<std::size_t>& moved);
 
+  /// At the end of the input: an EM still waiting for sigma starts with
+  /// what there is.
+  void finish(const points::PointMap& map);
+
   const std::vector<OnlineRecord>& history() const { return history_; }
   const std::vector<OnlineRepair>& repairs() const { return repairs_; }
   double seconds() const { return seconds_; }
-  em::PlanarMap map() const { return em_.map(); }
+  em::PlanarMap map() const { return em_ ? em_->map() : em::PlanarMap{}; }
+  /// sigma_m = auto: what was estimated (nullopt: a fixed sigma_m).
+  const std::optional<em::NoiseEstimate>& sigmaEstimate() const { return sigma_estimate_; }
 
  private:
   void writeSnapshot(const points::PointMap& map) const;
+  void feed(const points::PointMap& map, std::size_t record);
+  void start(const points::PointMap& map);
 
-  em::OnlineEm em_;
+  em::PlanarEmOptions options_;
+  em::OnlineEmOptions online_options_;
+  std::optional<em::OnlineEm> em_;
+  std::optional<em::NoiseEstimate> sigma_estimate_;
+  std::vector<std::size_t> waiting_;  ///< records placed before the EM started
   points::GridKeyer keyer_;
   std::filesystem::path out_dir_;
   int snapshot_every_;
