@@ -133,17 +133,19 @@ width); the others use \`pose_laser_aperture_deg = 180\` from
 ## Occupancy grids (\`grid.png\`, loop closure on, 10 cm cells)
 $grids
 
-What the pictures showed when this page was last looked at (2026-12-03,
-with refined keyframe edges and scans): ACES is the building's grid of corridors
-with thin single walls; no doubled wall is visible. MIT CSAIL holds together
-as a building; the walls of the central rectangular block are single lines
-now (they were doubled, a few decimetres apart, before the keyframe edges
-were refined); the rooms at the upper right and the open areas carry many
-long max-range-ish rays, not double walls. Intel comes out as one building
-(678 of 1,733 candidates accepted; before the refinement 20 of 2,828, and
-the ring corridor was several overlapping copies): the outer ring and rooms
-are single, but the two long inner corridor walls come out bowed, as arcs,
-where the real ones are straight: heading drift the loops did not take out
-there (issue 15).
+What the pictures showed when this page was last looked at (2026-12-04,
+with the innovation test and the front end's map trimmed to 20 m and rebuilt
+after closures): ACES is the building's grid of corridors with thin single
+walls; no doubled wall is visible. MIT CSAIL holds together as a building
+and the walls of the central rectangular block are single lines; along part
+of the long diagonal corridor below that block the south-west wall shows a
+second, fainter line a few decimetres off (the 2026-12-03 picture did not
+have it; with the front end's map rebuilt every 5 m as well it was worse:
+the block distorted and a long wall doubled, poses.md "The front end's
+map"); the rooms at the upper right and the open areas carry many long
+max-range-ish rays, not double walls. Intel comes out as one building (702
+of 1,706 candidates accepted): the outer ring and rooms are single, but the
+two long inner corridor walls come out bowed, as arcs, where the real ones
+are straight: heading drift the loops did not take out there (issue 15).
 DOC
 echo "wrote doc/loop-closure.md"
