@@ -29,6 +29,9 @@ OrderedJson GroundTruthRecorder::toJson(const World& world, const GroundTruthMet
   doc["format"] = "pmap-gt/1";
   doc["world"] = meta.world_name;
   doc["world_file"] = meta.world_file;
+  if (!meta.octomap.is_null()) {
+    doc["octomap"] = meta.octomap;
+  }
   doc["seed"] = meta.seed;
   doc["sigma_m"] = meta.sigma_m;
   doc["rawlog_format"] = meta.rawlog_format;

@@ -119,6 +119,27 @@ OrderedJson clutterJson(const World& world) {
   return out;
 }
 
+OrderedJson octomapJson(const VoxelWorld& voxels) {
+  const OctreeFileInfo& info = voxels.info();
+  const double res = voxels.resolution_m();
+  const Eigen::Vector3d lo = voxels.minIndex().cast<double>() * res;
+  const Eigen::Vector3d hi = (voxels.maxIndex().cast<double>().array() + 1.0).matrix() * res;
+  OrderedJson j;
+  j["file"] = info.file;
+  j["file_as_written"] = info.file_as_written;
+  j["bytes"] = info.bytes;
+  j["fnv1a_64"] = info.fnv1a_64;
+  j["tree_type"] = info.tree_type;
+  j["resolution_m"] = res;
+  j["tree_nodes"] = info.tree_nodes;
+  j["occupied_leaves"] = info.occupied_leaves;
+  j["occupied_voxels"] = voxels.occupiedVoxels();
+  j["occupied_box_m"] = OrderedJson::array({point(lo), point(hi)});
+  j["unknown_space"] = "free";
+  j["ground_truth"] = "the tree's occupied voxels: map-eval --gt-octomap <file>";
+  return j;
+}
+
 OrderedJson sensorsJson(const World& world, const PinholeIntrinsics& k, bool cameras_enabled,
                         const OdometryTruth& odometry) {
   const SensorOptions& s = world.sensors;

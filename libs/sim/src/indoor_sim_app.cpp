@@ -13,7 +13,9 @@ namespace {
 constexpr const char* kDescription =
     "indoor-sim: simulates a robot with a horizontal and a vertical 2D laser, drifting odometry "
     "and two side cameras driving through a synthetic building described by a world file "
-    "(config/worlds/*.json). Writes PREFIX.rawlog (MRPT rawlog, gzip), PREFIX_Images/ (camera "
+    "(config/worlds/*.json), or through the occupied voxels of any OctoMap tree (.bt) that a "
+    "world file names in its \"octomap\" block (no cameras then). Writes PREFIX.rawlog (MRPT "
+    "rawlog, gzip), PREFIX_Images/ (camera "
     "JPEGs referenced by the rawlog, poster PNGs), PREFIX.gt.json (exact ground truth, "
     "doc/ground-truth.md) and PREFIX.poses.txt (true poses); the four replace an earlier set "
     "together or not at all. Exit codes: 0 ok, 1 usage or configuration error, 2 input error, "
@@ -103,8 +105,13 @@ SimulationSummary IndoorSimApp::run() {
   }
   std::cerr << "indoor-sim: " << simulator.world().name << ": " << s.cycles << " cycles ("
             << s.duration_s << " s of " << s.path_length_m << " m path), " << s.structure_scans
-            << " structure scans, " << s.images << " images, " << s.surfaces << " surfaces -> "
-            << s.paths.rawlog.string() << "\n";
+            << " structure scans, " << s.images << " images, ";
+  if (const VoxelWorld* voxels = simulator.voxels()) {
+    std::cerr << s.occupied_voxels << " occupied voxels of " << voxels->info().file;
+  } else {
+    std::cerr << s.surfaces << " surfaces";
+  }
+  std::cerr << " -> " << s.paths.rawlog.string() << "\n";
   return s;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <utility>
 
 #include "pmap/common/error.h"
@@ -14,20 +15,27 @@
 #include "pmap/sim/observation_factory.h"
 #include "pmap/sim/odometry_sim.h"
 #include "pmap/sim/path_check.h"
+#include "pmap/sim/voxel_path_check.h"
 #include "pmap/sim/world_builder.h"
 #include "pmap/sim/world_loader.h"
 
 namespace pmap::sim {
 namespace {
 
+/// One scan of a laser from a robot pose, by the world's own ray casting.
+using Scanner =
+    std::function<SimulatedScan(const Pose2D&, const LaserOptions&, double sigma_m, Rng&)>;
+
 /// Simulates the cycles of one run and feeds the rawlog and the ground truth.
+/// Without `beam_ids` (voxel worlds) the structure scans carry no hit ids.
 class CycleRunner {
  public:
-  CycleRunner(const World& world, const Trajectory& trajectory, const RayCaster& caster,
+  CycleRunner(const World& world, const Trajectory& trajectory, Scanner scanner, bool beam_ids,
               const SimulatorOptions& options, const CameraRig* rig)
       : world_(world),
         trajectory_(trajectory),
-        caster_(caster),
+        scanner_(std::move(scanner)),
+        beam_ids_(beam_ids),
         options_(options),
         rig_(rig),
         odometry_(world.noise, options.seed) {}
@@ -42,7 +50,8 @@ class CycleRunner {
 
   const World& world_;
   const Trajectory& trajectory_;
-  const RayCaster& caster_;
+  Scanner scanner_;
+  bool beam_ids_;
   const SimulatorOptions& options_;
   const CameraRig* rig_;
   OdometrySimulator odometry_;
@@ -55,10 +64,11 @@ CycleRunner::Timed CycleRunner::scan(const LaserOptions& laser, std::size_t k, d
                                      GroundTruthRecorder* gt) {
   const double sigma = world_.noise.range_sigma_m;
   Rng rng(deriveSeed(options_.seed, "laser:" + laser.label, k));
-  const SimulatedScan s = simulateScan(caster_, trajectory_.poseAtTime(t_rel), laser, sigma, rng);
+  const SimulatedScan s = scanner_(trajectory_.poseAtTime(t_rel), laser, sigma, rng);
   const auto stamp = simTimestamp(world_.sensors.start_time_s, t_rel);
   if (gt != nullptr) {
-    gt->addStructureScan(mrpt::Clock::toDouble(stamp), laser.label, s.hit_ids);
+    gt->addStructureScan(mrpt::Clock::toDouble(stamp), laser.label,
+                         beam_ids_ ? s.hit_ids : std::vector<int>{});
   }
   return {t_rel, makeScanObservation(laser, s, stamp, sigma)};
 }
@@ -107,13 +117,35 @@ CycleRecord CycleRunner::run(std::size_t k, GroundTruthRecorder& gt) {
   return record;
 }
 
+/// The scans of a voxel world (`voxel_caster` set) or of a world of rectangles.
+Scanner makeScanner(const RayCaster* rectangles, const VoxelRayCaster* voxel_caster) {
+  if (voxel_caster != nullptr) {
+    const VoxelRayCaster& voxels = *voxel_caster;
+    const BeamCaster cast = [&voxels](const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
+                                      double max_range_m) -> std::optional<BeamHit> {
+      const std::optional<VoxelHit> hit = voxels.cast(origin, dir, max_range_m);
+      return hit ? std::optional<BeamHit>(BeamHit{hit->t, -1}) : std::nullopt;
+    };
+    return [cast](const Pose2D& robot, const LaserOptions& laser, double sigma_m, Rng& rng) {
+      return simulateScan(cast, robot, laser, sigma_m, rng);
+    };
+  }
+  const RayCaster& caster = *rectangles;
+  return [&caster](const Pose2D& robot, const LaserOptions& laser, double sigma_m, Rng& rng) {
+    return simulateScan(caster, robot, laser, sigma_m, rng);
+  };
+}
+
 GroundTruthMeta makeMeta(const World& world, const SimulatorOptions& options,
                          const Trajectory& trajectory, const CycleRunner& runner,
-                         const OutputPaths& paths, std::size_t cycles) {
+                         const OutputPaths& paths, std::size_t cycles, const VoxelWorld* voxels) {
   const SensorOptions& sensors = world.sensors;
   GroundTruthMeta meta;
   meta.world_name = world.name;
   meta.world_file = options.world_file.filename().string();
+  if (voxels != nullptr) {
+    meta.octomap = octomapJson(*voxels);
+  }
   meta.seed = options.seed;
   meta.sigma_m = world.noise.range_sigma_m;
   meta.rawlog_format = rawlogFormatName(options.format);
@@ -168,6 +200,13 @@ Simulator::Simulator(SimulatorOptions options) : options_(std::move(options)) {
     world_.sensors.cameras.enabled = false;
   }
   trajectory_ = std::make_unique<Trajectory>(world_.path, world_.source_file);
+  if (world_.octomap) {
+    voxels_ = std::make_unique<VoxelWorld>(loadVoxelWorld(*world_.octomap));
+    voxel_caster_ = std::make_unique<VoxelRayCaster>(*voxels_);
+    checkVoxelPathClearance(*voxels_, *trajectory_, world_.path.robot_radius_m, world_.sensors,
+                            world_.source_file);
+    return;
+  }
   caster_ = std::make_unique<RayCaster>(world_);
   checkPathClearance(*caster_, *trajectory_, world_.path.robot_radius_m, world_.source_file);
 }
@@ -201,7 +240,8 @@ SimulationSummary Simulator::run() {
   }
   RawlogWriter writer(staged.rawlog, options_.format);
   GroundTruthRecorder gt;
-  CycleRunner runner(world_, *trajectory_, *caster_, options_, rig.get());
+  CycleRunner runner(world_, *trajectory_, makeScanner(caster_.get(), voxel_caster_.get()),
+                     voxels_ == nullptr, options_, rig.get());
   const std::size_t n = cycleCount();
   ProgressLine progress("indoor-sim", options_.progress);
   for (std::size_t k = 0; k < n; ++k) {
@@ -211,7 +251,8 @@ SimulationSummary Simulator::run() {
   }
   progress.finish(std::to_string(n) + " cycles, " + std::to_string(runner.images()) + " images");
 
-  const GroundTruthMeta meta = makeMeta(world_, options_, *trajectory_, runner, staged, n);
+  const GroundTruthMeta meta =
+      makeMeta(world_, options_, *trajectory_, runner, staged, n, voxels_.get());
   writer.finish();
   gt.write(staged.gt_json, staged.poses_txt, world_, meta);
   throwIfInterrupted();  // the last chance: from here on the run completes
@@ -222,6 +263,7 @@ SimulationSummary Simulator::run() {
   summary.images = runner.images();
   summary.rawlog_objects = writer.objectsWritten();
   summary.surfaces = world_.surfaces.size();
+  summary.occupied_voxels = voxels_ ? voxels_->occupiedVoxels() : 0;
   summary.duration_s = meta.duration_s;
   summary.path_length_m = trajectory_->length_m();
   return summary;

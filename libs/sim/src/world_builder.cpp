@@ -50,6 +50,10 @@ World buildWorld(const WorldSpec& spec) {
   world.path = spec.path;
   world.sensors = spec.sensors;
   world.noise = spec.noise;
+  world.octomap = spec.octomap;
+  if (spec.octomap) {
+    return world;  // the geometry is the tree's, read by the simulator
+  }
   detail::SceneAssembler scene(world);
   for (const CorridorSpec& corridor : spec.corridors) {
     const detail::CorridorLayout layout =

@@ -161,13 +161,54 @@ FreeRectangleSpec readRectangle(JsonReader r) {
   return s;
 }
 
+/// The "octomap" block of a voxel world; a relative file is taken from the
+/// world file's directory.
+OctomapSpec readOctomap(JsonReader r, const std::string& world_file) {
+  OctomapSpec o;
+  o.where = r.path();
+  o.file_as_written = r.string("file", "");
+  if (o.file_as_written.empty()) {
+    r.failMissing("file");
+  }
+  std::filesystem::path file(o.file_as_written);
+  if (file.is_relative()) {
+    file = std::filesystem::path(world_file).parent_path() / file;
+  }
+  o.file = file.lexically_normal();
+  constexpr int kMaxLimit = 1000000000;
+  o.max_tree_nodes = static_cast<std::uint64_t>(
+      r.integer("max_tree_nodes", static_cast<int>(o.max_tree_nodes), 1, kMaxLimit));
+  o.max_occupied_voxels = static_cast<std::uint64_t>(
+      r.integer("max_occupied_voxels", static_cast<int>(o.max_occupied_voxels), 1, kMaxLimit));
+  r.finish();
+  return o;
+}
+
+/// A voxel world has no textures to render: a "cameras" block other than
+/// {"enabled": false} is refused, and the cameras are off.
+void disableCamerasOfVoxelWorld(const nlohmann::json& root, const std::string& file,
+                                SensorOptions& sensors) {
+  const auto s = root.find("sensors");
+  if (s != root.end() && s->is_object() && s->contains("cameras")) {
+    const nlohmann::json& c = s->at("cameras");
+    const bool off =
+        c.is_object() && c.size() == 1 && c.contains("enabled") && c["enabled"] == false;
+    if (!off) {
+      throw ConfigError(file +
+                        ": sensors.cameras: cameras are not supported in octomap worlds (voxels "
+                        "have no texture to render): remove the block or set \"enabled\": false");
+    }
+  }
+  sensors.cameras.enabled = false;
+}
+
 }  // namespace
 
 WorldSpec parseWorldText(const std::string& text, const std::string& file_name) {
   const nlohmann::json root = detail::parseStrictJson(text, file_name);
   JsonReader r(root, file_name, "");
-  for (const char* key :
-       {"name", "description", "corridors", "clutter", "rectangles", "path", "sensors", "noise"}) {
+  for (const char* key : {"name", "description", "corridors", "clutter", "rectangles", "octomap",
+                          "path", "sensors", "noise"}) {
     r.has(key);  // register every top-level key first: typos are reported as such
   }
   r.finish();
@@ -178,6 +219,16 @@ WorldSpec parseWorldText(const std::string& text, const std::string& file_name) 
     r.failMissing("name");
   }
   w.description = r.string("description", "");
+  if (r.has("octomap")) {
+    for (const char* geometry : {"corridors", "clutter", "rectangles"}) {
+      if (r.has(geometry)) {
+        r.fail(geometry,
+               "an octomap world takes its geometry from the tree: remove corridors, clutter "
+               "and rectangles (or the octomap block)");
+      }
+    }
+    w.octomap = readOctomap(r.object("octomap"), file_name);
+  }
   for (JsonReader c : r.objects("corridors")) {
     w.corridors.push_back(readCorridor(c));
   }
@@ -194,6 +245,9 @@ WorldSpec parseWorldText(const std::string& text, const std::string& file_name) 
   w.sensors = detail::readSensors(r.object("sensors"));
   w.noise = detail::readNoise(r.object("noise"));
   r.finish();
+  if (w.octomap) {
+    disableCamerasOfVoxelWorld(root, file_name, w.sensors);
+  }
   return w;
 }
 

@@ -2,7 +2,10 @@
 // a thin shell over it):
 //   indoor-sim [--world FILE] [--seed N] [--sigma METRES] [--format obs|sf]
 //              [--duration SECONDS] [--no-cameras] [--quiet] --out PREFIX
-// Exit codes: 0 ok, 1 usage or configuration error, 2 input error, 4 output
+// A world file with an "octomap" block drives the robot through that tree's
+// occupied voxels (doc/simulator.md, "Voxel worlds").
+// Exit codes: 0 ok, 1 usage or configuration error, 2 input error (a voxel
+// world's tree missing, damaged, empty or too large), 4 output
 // error (pmap::Error::exitCode()); SIGINT, SIGTERM, SIGHUP during the run:
 // pmap::Interrupted (exitCode() 128 + signo) after the temporaries are removed.
 #pragma once

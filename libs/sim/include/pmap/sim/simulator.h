@@ -1,7 +1,7 @@
-// indoor-sim's engine: loads and expands a world, drives the robot along its
-// path and writes the rawlog, the external images, the ground truth and the
-// true poses (doc/simulator.md, doc/ground-truth.md). Same world + seed +
-// options give byte-identical outputs.
+// indoor-sim's engine: loads and expands a world (or, for a voxel world, reads
+// its OctoMap tree), drives the robot along its path and writes the rawlog,
+// the external images, the ground truth and the true poses (doc/simulator.md,
+// doc/ground-truth.md). Same world + seed + options give byte-identical outputs.
 #pragma once
 
 #include <cstdint>
@@ -14,6 +14,8 @@
 #include "pmap/sim/rawlog_writer.h"
 #include "pmap/sim/ray_caster.h"
 #include "pmap/sim/trajectory.h"
+#include "pmap/sim/voxel_ray_caster.h"
+#include "pmap/sim/voxel_world.h"
 #include "pmap/sim/world.h"
 
 namespace pmap::sim {
@@ -37,13 +39,15 @@ struct SimulationSummary {
   std::size_t images = 0;
   std::size_t rawlog_objects = 0;
   std::size_t surfaces = 0;
-  double duration_s = 0.0;     ///< simulated time, seconds
-  double path_length_m = 0.0;  ///< full path length (even if cut)
+  std::uint64_t occupied_voxels = 0;  ///< voxel worlds: the tree's occupied voxels
+  double duration_s = 0.0;            ///< simulated time, seconds
+  double path_length_m = 0.0;         ///< full path length (even if cut)
 };
 
 class Simulator {
  public:
-  /// Loads and expands the world and checks the path (ConfigError).
+  /// Loads and expands the world and checks the path (ConfigError); a voxel
+  /// world's tree that cannot be used is an InputError.
   explicit Simulator(SimulatorOptions options);
   ~Simulator();
 
@@ -56,6 +60,8 @@ class Simulator {
 
   const World& world() const { return world_; }
   const Trajectory& trajectory() const { return *trajectory_; }
+  /// The occupied voxels of a voxel world, nullptr for a world of rectangles.
+  const VoxelWorld* voxels() const { return voxels_.get(); }
   const SimulatorOptions& options() const { return options_; }
   /// Number of cycles run() will simulate.
   std::size_t cycleCount() const;
@@ -64,7 +70,9 @@ class Simulator {
   SimulatorOptions options_;
   World world_;
   std::unique_ptr<Trajectory> trajectory_;
-  std::unique_ptr<RayCaster> caster_;
+  std::unique_ptr<RayCaster> caster_;             ///< worlds of rectangles and solids
+  std::unique_ptr<VoxelWorld> voxels_;            ///< voxel worlds
+  std::unique_ptr<VoxelRayCaster> voxel_caster_;  ///< voxel worlds
 };
 
 }  // namespace pmap::sim

@@ -1,7 +1,9 @@
 // The expanded world: every surface as a rectangle (with holes), posters apart
 // (texture only, geometrically part of their wall), clutter solids, plus the
 // path, sensor and noise options carried over from the world file. Ids are
-// unique across surfaces, clutter and posters (in that order).
+// unique across surfaces, clutter and posters (in that order). A voxel world
+// has none of these: it names its OctoMap tree (`octomap`), which the
+// simulator reads (voxel_world.h).
 #pragma once
 
 #include <string>
@@ -48,6 +50,7 @@ struct World {
   std::vector<Surface> surfaces;
   std::vector<Poster> posters;
   std::vector<Clutter> clutter;
+  std::optional<OctomapSpec> octomap;  ///< set: a voxel world
   PathSpec path;
   SensorOptions sensors;
   NoiseOptions noise;

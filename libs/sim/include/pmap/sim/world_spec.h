@@ -1,12 +1,16 @@
 // A world as written in a world file (config/worlds/*.json): corridors with
-// their doors, doorways to rooms and posters, clutter, free rectangles, the
-// robot's path and the sensor/noise blocks. buildWorld() expands it into
+// their doors, doorways to rooms and posters, clutter, free rectangles (or,
+// instead of all these, an OctoMap tree whose occupied voxels are the
+// building), the robot's path and the sensor/noise blocks. buildWorld() expands it into
 // rectangles (world.h). Every element keeps `where`, its JSON path, so that
 // geometric errors found while expanding can name file and key.
 #pragma once
 
 #include <Eigen/Core>
 #include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -115,6 +119,17 @@ struct PathSpec {
   bool validate(std::string* why) const;
 };
 
+/// A voxel world: the occupied voxels of an OctoMap binary tree (.bt) are the
+/// building (doc/simulator.md, "Voxel worlds"). The limits bound the memory a
+/// damaged or huge file can take before anything is allocated for it.
+struct OctomapSpec {
+  std::string where;                             ///< JSON path of the block, for messages
+  std::string file_as_written;                   ///< the world file's "file" value
+  std::filesystem::path file;                    ///< resolved against the world file's directory
+  std::uint64_t max_tree_nodes = 20000000;       ///< a tree with more nodes is refused
+  std::uint64_t max_occupied_voxels = 20000000;  ///< at the finest resolution (map-eval's limit)
+};
+
 struct WorldSpec {
   std::string source_file;  ///< for error messages
   std::string name;
@@ -122,6 +137,7 @@ struct WorldSpec {
   std::vector<CorridorSpec> corridors;
   std::vector<ClutterSpec> clutter;
   std::vector<FreeRectangleSpec> rectangles;
+  std::optional<OctomapSpec> octomap;  ///< set: a voxel world (no corridors, clutter, rectangles)
   PathSpec path;
   SensorOptions sensors;
   NoiseOptions noise;

@@ -19,6 +19,7 @@ namespace pmap::sim {
 struct GroundTruthMeta {
   std::string world_name;
   std::string world_file;
+  OrderedJson octomap;  ///< voxel worlds: the tree read (octomapJson), null otherwise
   std::uint64_t seed = 0;
   double sigma_m = 0.0;
   std::string rawlog_format;
@@ -37,7 +38,8 @@ class GroundTruthRecorder {
  public:
   /// Poses must come in non-decreasing time; a repeated timestamp is kept once.
   void addPose(double t_s, const Pose2D& pose);
-  /// One entry per structure (vertical laser) observation, in file order.
+  /// One entry per structure (vertical laser) observation, in file order
+  /// (`hits` empty where objects have no ids: voxel worlds).
   void addStructureScan(double t_s, const std::string& label, const std::vector<int>& hits);
   /// One entry per camera image, in file order.
   void addImage(const ImageRecord& record);

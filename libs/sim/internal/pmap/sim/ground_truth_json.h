@@ -9,6 +9,7 @@
 
 #include "pmap/sim/camera_model.h"
 #include "pmap/sim/frame_imaging.h"
+#include "pmap/sim/voxel_world.h"
 #include "pmap/sim/world.h"
 
 namespace pmap::sim {
@@ -22,6 +23,11 @@ OrderedJson surfacesJson(const World& world);
 OrderedJson postersJson(const World& world, const std::string& images_dir_name);
 /// Every clutter object: id, kind, shape and its parameters.
 OrderedJson clutterJson(const World& world);
+
+/// A voxel world's tree: the file read (as resolved and as written, size,
+/// FNV-1a hash), its type, resolution, nodes, occupied leaves and voxels, the
+/// box of the occupied voxels, and how unknown space was treated.
+OrderedJson octomapJson(const VoxelWorld& voxels);
 
 /// The effective odometry drift, for the sensors block.
 struct OdometryTruth {

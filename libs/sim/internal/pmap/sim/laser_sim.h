@@ -7,6 +7,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
+#include <optional>
 #include <vector>
 
 #include "pmap/sim/pose.h"
@@ -33,9 +35,24 @@ RigidTransform laserToWorld(const Pose2D& robot, const LaserOptions& laser);
 /// Unit direction of beam i in the world frame.
 Eigen::Vector3d beamDirectionInWorld(const Pose2D& robot, const LaserOptions& laser, int beam);
 
+/// The true hit of one beam: distance along its unit direction and the id of
+/// what it hit (-1 where objects have no ids, as voxels).
+struct BeamHit {
+  double t_m = 0.0;
+  int id = -1;
+};
+/// Casts one beam from `origin` along the unit `dir`; nullopt without a hit
+/// within `max_range_m`.
+using BeamCaster = std::function<std::optional<BeamHit>(
+    const Eigen::Vector3d& origin, const Eigen::Vector3d& dir, double max_range_m)>;
+
 /// Casts every beam from the sensor origin; adds N(0, sigma_m^2) noise drawn from
 /// `rng` (one draw per beam, hit or not). A noisy range beyond max range (or not
 /// positive) becomes invalid with range = max range.
+SimulatedScan simulateScan(const BeamCaster& cast, const Pose2D& robot, const LaserOptions& laser,
+                           double sigma_m, Rng& rng);
+/// The same against a World's surfaces and clutter (only the objects whose
+/// bounding sphere meets the scan plane are tried).
 SimulatedScan simulateScan(const RayCaster& caster, const Pose2D& robot, const LaserOptions& laser,
                            double sigma_m, Rng& rng);
 

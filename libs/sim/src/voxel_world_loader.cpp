@@ -1,0 +1,116 @@
+// loadVoxelWorld: the .bt file checked by our own walk (octree_file.h), then
+// read by OctoMap, whose occupied leaves become the simulator's voxel set.
+#include <octomap/OcTree.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "pmap/common/error.h"
+#include "pmap/sim/octree_file.h"
+#include "pmap/sim/voxel_world.h"
+
+namespace pmap::sim {
+namespace {
+
+namespace fs = std::filesystem;
+
+// OctoMap reports on std::cerr; indoor-sim's stderr is for its own lines.
+class QuietCerr {
+ public:
+  QuietCerr() : old_(std::cerr.rdbuf(nullptr)) {}
+  ~QuietCerr() {
+    std::cerr.rdbuf(old_);
+    std::cerr.clear();  // a stream without a buffer sets badbit when written to
+  }
+  QuietCerr(const QuietCerr&) = delete;
+  QuietCerr& operator=(const QuietCerr&) = delete;
+
+ private:
+  std::streambuf* old_;
+};
+
+/// The whole file, after checking that it exists and is not larger than a
+/// tree within the limits can be (two bytes per inner node plus the header).
+std::string readTreeBytes(const OctomapSpec& spec) {
+  const std::string file = spec.file.string();
+  std::error_code ec;
+  if (!fs::exists(spec.file, ec)) {
+    throw InputError(file + ": OctoMap tree not found (" + spec.where + ".file in the world file)");
+  }
+  if (!fs::is_regular_file(spec.file, ec)) {
+    throw InputError(file + ": not a regular file (" + spec.where + ".file)");
+  }
+  const std::uintmax_t size = fs::file_size(spec.file, ec);
+  const std::uint64_t max_bytes = 2 * spec.max_tree_nodes + 65536;
+  if (ec) {
+    throw InputError(file + ": cannot read its size: " + ec.message());
+  }
+  if (size > max_bytes) {
+    throw InputError(file + ": " + std::to_string(size) +
+                     " bytes, more than a tree of max_tree_nodes (" +
+                     std::to_string(spec.max_tree_nodes) + ") nodes can hold");
+  }
+  std::ifstream in(spec.file, std::ios::binary);
+  std::string bytes(static_cast<std::size_t>(size), '\0');
+  if (!in || !in.read(bytes.data(), static_cast<std::streamsize>(size)) ||
+      in.peek() != std::char_traits<char>::eof()) {
+    throw InputError(file + ": cannot read the file (or it changed while read)");
+  }
+  return bytes;
+}
+
+}  // namespace
+
+VoxelWorld loadVoxelWorld(const OctomapSpec& spec) {
+  const std::string file = spec.file.string();
+  const std::string bytes = readTreeBytes(spec);
+  const OctreeLimits limits{spec.max_tree_nodes, spec.max_occupied_voxels};
+  const OctreeHeader header = parseOctreeHeader(bytes, file, limits);
+  const OctreeCounts counts = checkOctreeData(bytes, header, file, limits);
+
+  octomap::OcTree tree(header.resolution_m);
+  bool read = false;
+  {
+    std::istringstream in(bytes);  // a fresh stream at the file's first byte
+    const QuietCerr quiet;
+    read = tree.readBinary(in);
+  }
+  if (!read) {
+    throw InputError(file + ": OctoMap's reader refused the tree (OcTree::readBinary failed)");
+  }
+  std::vector<VoxelWorld::Block> blocks;
+  blocks.reserve(static_cast<std::size_t>(counts.occupied_leaves));
+  std::uint64_t voxels = 0;
+  for (auto it = tree.begin_leafs(), end = tree.end_leafs(); it != end; ++it) {
+    if (!tree.isNodeOccupied(*it)) {
+      continue;
+    }
+    const int side = 1 << (kOctreeDepth - static_cast<int>(it.getDepth()));
+    const octomap::OcTreeKey key = it.getKey();
+    VoxelWorld::Block b;
+    b.side = side;
+    for (int a = 0; a < 3; ++a) {  // a leaf's key lies inside it: its lowest voxel
+      b.corner[a] = static_cast<int>(key[a] & ~(side - 1)) - 32768;
+    }
+    blocks.push_back(b);
+    voxels += static_cast<std::uint64_t>(side) * side * side;
+  }
+  if (voxels != counts.occupied_voxels) {
+    throw InputError(file + ": OctoMap read " + std::to_string(voxels) +
+                     " occupied voxels where the file's data holds " +
+                     std::to_string(counts.occupied_voxels) + " (damaged tree)");
+  }
+  OctreeFileInfo info;
+  info.file = file;
+  info.file_as_written = spec.file_as_written;
+  info.bytes = bytes.size();
+  info.fnv1a_64 = fnv1a64Hex(bytes);
+  info.tree_type = header.id;
+  info.tree_nodes = counts.nodes;
+  info.occupied_leaves = counts.occupied_leaves;
+  return VoxelWorld(tree.getResolution(), blocks, std::move(info));
+}
+
+}  // namespace pmap::sim
