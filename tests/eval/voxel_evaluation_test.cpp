@@ -65,6 +65,13 @@ TEST(VoxelGroundTruth, RefusesWhatIsNotATree) {
   VoxelOptions small;
   small.max_voxels = 10;
   EXPECT_THROW(readVoxelGroundTruth(writeWall(dir), small), InputError);
+  // A valid header followed by 1 MB of 0xff bytes (every child an inner
+  // node): OctoMap's own reader crashed on it (SIGSEGV); refused by the
+  // walk of the node data first (common/octree_file.h).
+  std::ofstream(dir / "ff.bt", std::ios::binary)
+      << "# Octomap OcTree binary file\nid OcTree\nsize 5\nres 0.1\ndata\n"
+      << std::string(1 << 20, '\xff');
+  EXPECT_THROW(readVoxelGroundTruth(dir / "ff.bt"), InputError);
 }
 
 TEST(VoxelDistance, IsTheDistanceToTheNearestCube) {

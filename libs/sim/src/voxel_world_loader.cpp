@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "pmap/common/error.h"
-#include "pmap/sim/octree_file.h"
+#include "pmap/common/octree_file.h"
 #include "pmap/sim/voxel_world.h"
 
 namespace pmap::sim {
@@ -42,23 +42,7 @@ std::string readTreeBytes(const OctomapSpec& spec) {
   if (!fs::is_regular_file(spec.file, ec)) {
     throw InputError(file + ": not a regular file (" + spec.where + ".file)");
   }
-  const std::uintmax_t size = fs::file_size(spec.file, ec);
-  const std::uint64_t max_bytes = 2 * spec.max_tree_nodes + 65536;
-  if (ec) {
-    throw InputError(file + ": cannot read its size: " + ec.message());
-  }
-  if (size > max_bytes) {
-    throw InputError(file + ": " + std::to_string(size) +
-                     " bytes, more than a tree of max_tree_nodes (" +
-                     std::to_string(spec.max_tree_nodes) + ") nodes can hold");
-  }
-  std::ifstream in(spec.file, std::ios::binary);
-  std::string bytes(static_cast<std::size_t>(size), '\0');
-  if (!in || !in.read(bytes.data(), static_cast<std::streamsize>(size)) ||
-      in.peek() != std::char_traits<char>::eof()) {
-    throw InputError(file + ": cannot read the file (or it changed while read)");
-  }
-  return bytes;
+  return readOctreeBytes(spec.file, {spec.max_tree_nodes, spec.max_occupied_voxels});
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-#include "pmap/sim/octree_file.h"
+#include "pmap/common/octree_file.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 
 #include "pmap/common/error.h"
 
-namespace pmap::sim {
+namespace pmap {
 namespace {
 
 const std::string kFirst = "# Octomap OcTree binary file\n";
@@ -130,4 +130,4 @@ TEST(OctreeFile, Fnv1a64) {
 }
 
 }  // namespace
-}  // namespace pmap::sim
+}  // namespace pmap

@@ -10,9 +10,10 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <string>
 
-namespace pmap::sim {
+namespace pmap {
 
 /// The header lines of a .bt file.
 struct OctreeHeader {
@@ -52,7 +53,12 @@ OctreeHeader parseOctreeHeader(const std::string& bytes, const std::string& file
 OctreeCounts checkOctreeData(const std::string& bytes, const OctreeHeader& header,
                              const std::string& file, const OctreeLimits& limits);
 
+/// The bytes of the .bt file `file`, refused (InputError naming it) when it
+/// is larger than a tree of limits.max_tree_nodes nodes can be (2 bytes per
+/// node and a 64 KiB header) or cannot be read whole.
+std::string readOctreeBytes(const std::filesystem::path& file, const OctreeLimits& limits);
+
 /// FNV-1a (64 bit) of `bytes` as 16 hex digits: identifies the tree a run used.
 std::string fnv1a64Hex(const std::string& bytes);
 
-}  // namespace pmap::sim
+}  // namespace pmap

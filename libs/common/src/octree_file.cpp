@@ -1,13 +1,14 @@
-#include "pmap/sim/octree_file.h"
+#include "pmap/common/octree_file.h"
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <vector>
 
 #include "pmap/common/error.h"
 
-namespace pmap::sim {
+namespace pmap {
 namespace {
 
 constexpr const char* kFirstLine = "# Octomap OcTree binary file";
@@ -217,6 +218,26 @@ OctreeCounts checkOctreeData(const std::string& bytes, const OctreeHeader& heade
   return c;
 }
 
+std::string readOctreeBytes(const std::filesystem::path& file, const OctreeLimits& limits) {
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(file, ec);
+  if (ec) {
+    fail(file.string(), "cannot read its size: " + ec.message());
+  }
+  const std::uint64_t max_bytes = 2 * limits.max_tree_nodes + kMaxHeaderBytes;
+  if (size > max_bytes) {
+    fail(file.string(), std::to_string(size) + " bytes, more than a tree of max_tree_nodes (" +
+                            std::to_string(limits.max_tree_nodes) + ") nodes can hold");
+  }
+  std::ifstream in(file, std::ios::binary);
+  std::string bytes(static_cast<std::size_t>(size), '\0');
+  if (!in || !in.read(bytes.data(), static_cast<std::streamsize>(size)) ||
+      in.peek() != std::char_traits<char>::eof()) {
+    fail(file.string(), "cannot read the file (or it changed while read)");
+  }
+  return bytes;
+}
+
 std::string fnv1a64Hex(const std::string& bytes) {
   std::uint64_t h = 0xcbf29ce484222325ull;
   for (const char ch : bytes) {
@@ -228,4 +249,4 @@ std::string fnv1a64Hex(const std::string& bytes) {
   return out;
 }
 
-}  // namespace pmap::sim
+}  // namespace pmap
