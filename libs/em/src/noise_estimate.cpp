@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "pmap/em/cell_key.h"
+#include "pmap/em/planar_em_options.h"
 #include "pmap/em/point_grid.h"
 
 namespace pmap::em {
@@ -103,6 +104,20 @@ NoiseEstimate estimateRangeSigma(const std::vector<Eigen::Vector3d>& points,
   out.p25_m = quantile(values, 0.25);
   out.p75_m = quantile(values, 0.75);
   return out;
+}
+
+NoiseEstimate estimateSigmaInto(PlanarEmOptions& options,
+                                const std::vector<Eigen::Vector3d>& points) {
+  NoiseEstimate e = estimateRangeSigma(points);
+  PlanarEmOptions tried = options;
+  tried.sigma_m = e.sigma_m;
+  std::string why;
+  if (e.estimated && tried.validate(&why)) {
+    options.sigma_m = e.sigma_m;
+  } else {
+    e.estimated = false;
+  }
+  return e;
 }
 
 }  // namespace pmap::em

@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <iostream>
+#include <sstream>
 
 #include "pmap/common/error.h"
 #include "pmap/common/octree_file.h"
+#include "pmap/common/quiet_cerr.h"
 
 namespace pmap::eval {
 namespace fs = std::filesystem;
@@ -21,19 +21,6 @@ constexpr std::int64_t kHalfRange = std::int64_t{1} << 20;  // voxel indices in 
 std::int64_t cell(double v, double res) {
   return static_cast<std::int64_t>(std::floor(v / res));
 }
-
-// OctoMap's reader reports on std::cerr ("Reading binary octree type
-// OcTree"); map-eval's stderr is for its own one-line errors and warnings.
-class QuietCerr {
- public:
-  QuietCerr() : old_(std::cerr.rdbuf(nullptr)) {}
-  ~QuietCerr() { std::cerr.rdbuf(old_); }
-  QuietCerr(const QuietCerr&) = delete;
-  QuietCerr& operator=(const QuietCerr&) = delete;
-
- private:
-  std::streambuf* old_;
-};
 
 json statsJson(const ErrorStats& s) {
   return {{"samples", s.samples}, {"mean_m", s.mean_m}, {"p95_m", s.p95_m}};
@@ -57,24 +44,20 @@ VoxelGroundTruth readVoxelGroundTruth(const fs::path& bt, const VoxelOptions& op
   }
   // Checked by our own walk of the header and node data first
   // (octree_file.h): OctoMap's reader trusts the file, and a header followed
-  // by 1 MB of 0xff bytes crashed map-eval (SIGSEGV) before this.
-  {
-    const OctreeLimits limits{options.max_voxels, options.max_voxels};
-    const std::string bytes = readOctreeBytes(bt, limits);
-    const OctreeHeader header = parseOctreeHeader(bytes, bt.string(), limits);
-    checkOctreeData(bytes, header, bt.string(), limits);
-  }
-  // OcTree::readBinary reads the header itself, from a fresh stream: the
-  // same stream sought back to 0 gave a slightly different tree on
-  // geb079.bt (voxel-to-map mean 4e-11 m apart; not investigated).
-  std::ifstream in(bt, std::ios::binary);
+  // by 1 MB of 0xff bytes crashed map-eval (SIGSEGV) before this. OctoMap then
+  // reads the same bytes, from a fresh stream at the first one (the file's
+  // stream sought back to 0 gave a slightly different tree on geb079.bt:
+  // voxel-to-map mean 4e-11 m apart; not investigated).
+  const OctreeLimits limits{options.max_voxels, options.max_voxels};
+  const std::string bytes = readOctreeBytes(bt, limits);
+  checkOctreeData(bytes, parseOctreeHeader(bytes, bt.string(), limits), bt.string(), limits);
   octomap::OcTree tree(0.1);
   bool read = false;
   {
+    std::istringstream in(bytes);
     const QuietCerr quiet;
-    read = in && tree.readBinary(in);
+    read = tree.readBinary(in);
   }
-  std::cerr.clear();  // a stream without buffer sets badbit when written to
   if (!read) {
     throw InputError(bt.string() + ": damaged OctoMap binary tree (OcTree::readBinary failed)");
   }

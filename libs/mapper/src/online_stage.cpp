@@ -45,16 +45,8 @@ void OnlineStage::finish(const points::PointMap& map) {
 // sigma_m stays), then the EM takes the waiting scans.
 void OnlineStage::start(const points::PointMap& map) {
   const auto t0 = std::chrono::steady_clock::now();
-  sigma_estimate_ = em::estimateRangeSigma(map.xyz());
   em::PlanarEmOptions o = options_;
-  if (sigma_estimate_->estimated) {
-    o.sigma_m = sigma_estimate_->sigma_m;
-    std::string why;
-    if (!o.validate(&why)) {
-      o.sigma_m = options_.sigma_m;
-      sigma_estimate_->estimated = false;
-    }
-  }
+  sigma_estimate_ = em::estimateSigmaInto(o, map.xyz());
   seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   em_.emplace(o, online_options_);
   for (const std::size_t record : waiting_) {

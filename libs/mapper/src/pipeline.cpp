@@ -90,15 +90,7 @@ void resolveAutoSigma(MapperConfig& config, StageClock& clock, MappingResult& re
     return;
   }
   auto in_em = clock.enter(Stage::kEm);
-  result.sigma_estimate = em::estimateRangeSigma(result.points.map.xyz());
-  em::PlanarEmOptions o = em;
-  o.sigma_m = result.sigma_estimate->sigma_m;
-  std::string why;
-  if (result.sigma_estimate->estimated && o.validate(&why)) {
-    em.sigma_m = o.sigma_m;
-  } else {
-    result.sigma_estimate->estimated = false;
-  }
+  result.sigma_estimate = em::estimateSigmaInto(em, result.points.map.xyz());
 }
 
 // The offline EM over the points as they are placed now.

@@ -25,9 +25,11 @@ void PooledGrid::raise(int c, int r, float v) {
   cell = std::max(cell, v);
 }
 
-bool PooledGrid::nonZero(const Level& level, int tc, int tr) const {
-  return tc < tile_cols_ && tr < tile_rows_ &&
-         level.index[static_cast<std::size_t>(tr * tile_cols_ + tc)] >= 0;
+std::int32_t PooledGrid::tileIndex(const Level& level, int tc, int tr) const {
+  if (tc >= tile_cols_ || tr >= tile_rows_) {
+    return -1;
+  }
+  return level.index[static_cast<std::size_t>(tr * tile_cols_ + tc)];
 }
 
 void PooledGrid::pool(int count) {
@@ -38,10 +40,7 @@ void PooledGrid::pool(int count) {
 
 const float* PooledGrid::tile(const Level& level, int tc, int tr) const {
   static const float kZeros[kCells] = {};
-  if (tc >= tile_cols_ || tr >= tile_rows_) {
-    return kZeros;
-  }
-  const std::int32_t t = level.index[static_cast<std::size_t>(tr * tile_cols_ + tc)];
+  const std::int32_t t = tileIndex(level, tc, tr);
   return t < 0 ? kZeros : &level.cells[static_cast<std::size_t>(t) * kCells];
 }
 
@@ -69,7 +68,7 @@ void PooledGrid::addLevel() {
         for (int ox = 0; ox <= reach; ++ox) {
           const bool read = (ox == 0 || ox >= first) && (oy == 0 || oy >= first);
           at(ox, oy) = read ? tile(prev, tc + ox, tr + oy) : nullptr;
-          needed = needed || (read && nonZero(prev, tc + ox, tr + oy));
+          needed = needed || (read && tileIndex(prev, tc + ox, tr + oy) >= 0);
         }
       }
       if (!needed) {

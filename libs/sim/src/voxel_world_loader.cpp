@@ -3,33 +3,17 @@
 #include <octomap/OcTree.h>
 
 #include <filesystem>
-#include <fstream>
-#include <iostream>
 #include <sstream>
 
 #include "pmap/common/error.h"
 #include "pmap/common/octree_file.h"
+#include "pmap/common/quiet_cerr.h"
 #include "pmap/sim/voxel_world.h"
 
 namespace pmap::sim {
 namespace {
 
 namespace fs = std::filesystem;
-
-// OctoMap reports on std::cerr; indoor-sim's stderr is for its own lines.
-class QuietCerr {
- public:
-  QuietCerr() : old_(std::cerr.rdbuf(nullptr)) {}
-  ~QuietCerr() {
-    std::cerr.rdbuf(old_);
-    std::cerr.clear();  // a stream without a buffer sets badbit when written to
-  }
-  QuietCerr(const QuietCerr&) = delete;
-  QuietCerr& operator=(const QuietCerr&) = delete;
-
- private:
-  std::streambuf* old_;
-};
 
 /// The whole file, after checking that it exists and is not larger than a
 /// tree within the limits can be (two bytes per inner node plus the header).

@@ -34,4 +34,13 @@ struct NoiseEstimate {
 NoiseEstimate estimateRangeSigma(const std::vector<Eigen::Vector3d>& points,
                                  const NoiseEstimateOptions& options = {});
 
+struct PlanarEmOptions;
+
+/// sigma_m = auto: options.sigma_m becomes the estimate from `points` when
+/// there is one and it is a valid sigma_m (options.validate: z_max_m must
+/// exceed 3 sigma); otherwise options stay and the result says
+/// estimated = false.
+NoiseEstimate estimateSigmaInto(PlanarEmOptions& options,
+                                const std::vector<Eigen::Vector3d>& points);
+
 }  // namespace pmap::em

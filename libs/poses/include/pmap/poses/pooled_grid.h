@@ -63,7 +63,8 @@ class PooledGrid {
     std::vector<std::int32_t> index;  ///< per tile, row-major: its place in cells, or -1 (zero)
     std::vector<float> cells;         ///< the allocated tiles, kCells each
   };
-  bool nonZero(const Level& level, int tc, int tr) const;
+  /// Tile (tc, tr)'s place in level.cells, or -1 (all zero, or past the grid).
+  std::int32_t tileIndex(const Level& level, int tc, int tr) const;
   /// Tile (tc, tr)'s cells, or a tile of zeros.
   const float* tile(const Level& level, int tc, int tr) const;
   void addLevel();
