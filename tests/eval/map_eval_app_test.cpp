@@ -170,6 +170,25 @@ TEST(MapEvalApp, MainWritesEvalJsonAndReturnsInputErrorsAsExitCode2) {
   EXPECT_EQ(mapEvalMain(static_cast<int>(argv.size()), argv.data()), 2);
 }
 
+// A voxel world's gt.json has poses but no surfaces or objects: what needs
+// them is null, not a zero that reads as a perfect map.
+TEST(MapEvalApp, GroundTruthWithoutObjectsGivesNullDistances) {
+  SurfaceTestWorld w;
+  for (int i = 0; i < 50; ++i) {
+    w.addPoint({0.1 * i, 1.0, 0.5}, -1, -1);
+  }
+  const json doc = evaluateMap(writeWorld(w, "no_objects", false));
+  EXPECT_LT(doc["pose_ate_m"].get<double>(), 1e-9);
+  EXPECT_EQ(doc["label_check"]["labelled"], 0);
+  EXPECT_TRUE(doc["label_check"]["fraction_within_3sigma"].is_null());
+  ASSERT_FALSE(doc["octomap"].empty());
+  for (const json& o : doc["octomap"]) {
+    EXPECT_TRUE(o["mean_error_m"].is_null());
+    EXPECT_TRUE(o["map_to_gt_mean_error_m"].is_null());
+    EXPECT_GT(o["occupied_voxels"].get<int>(), 0);
+  }
+}
+
 TEST(MapEvalApp, InconsistentMapFilesAreInputErrors) {
   SurfaceTestWorld w = world();
   w.surfaces.pop_back();  // points still carry surface id 1

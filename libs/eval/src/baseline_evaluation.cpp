@@ -16,11 +16,16 @@ using products::OutputLayout;
 
 namespace {
 
+// Null distances when the ground truth has no geometry to sample (a voxel
+// world's gt.json: its geometry is the .bt, scored by --gt-octomap): a
+// zero would read as a perfect map, the cap as a bad one.
 void addAccuracy(const MapAccuracy& a, json& out) {
-  out["mean_error_m"] = a.gt_to_map.mean_m;
-  out["p95_error_m"] = a.gt_to_map.p95_m;
-  out["map_to_gt_mean_error_m"] = a.map_to_gt.mean_m;
-  out["map_to_gt_p95_error_m"] = a.map_to_gt.p95_m;
+  const bool scored = a.gt_to_map.samples > 0;
+  const auto value = [scored](double v) { return scored ? json(v) : json(nullptr); };
+  out["mean_error_m"] = value(a.gt_to_map.mean_m);
+  out["p95_error_m"] = value(a.gt_to_map.p95_m);
+  out["map_to_gt_mean_error_m"] = value(a.map_to_gt.mean_m);
+  out["map_to_gt_p95_error_m"] = value(a.map_to_gt.p95_m);
   out["map_samples"] = a.map_to_gt.samples;
 }
 
@@ -176,7 +181,7 @@ std::string baselineReportText(const json& doc) {
   std::string text;
   char line[200];
   const auto add = [&](const std::string& name, const json& e) {
-    if (!e.contains("mean_error_m"))
+    if (!e.contains("mean_error_m") || e["mean_error_m"].is_null())
       return;
     std::snprintf(line, sizeof line, "%s: error mean %.4f m, p95 %.4f m; %lld bytes\n",
                   name.c_str(), e["mean_error_m"].get<double>(), e["p95_error_m"].get<double>(),

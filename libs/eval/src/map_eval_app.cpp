@@ -85,15 +85,17 @@ json poseJson(const PoseErrors& e) {
             {"y", e.alignment.t.y()}}}};
 }
 
+// The distances are null when no point has a labelled surface.
 json labelJson(const LabelCheck& c) {
+  const auto value = [&c](double v) { return c.labelled > 0 ? json(v) : json(nullptr); };
   return {{"points", c.points},
           {"labelled", c.labelled},
           {"unlabelled", c.unlabelled},
           {"within_3sigma", c.within_3sigma},
-          {"fraction_within_3sigma", c.fraction_within_3sigma},
-          {"median_m", c.median_m},
-          {"p99_m", c.p99_m},
-          {"max_m", c.max_m}};
+          {"fraction_within_3sigma", value(c.fraction_within_3sigma)},
+          {"median_m", value(c.median_m)},
+          {"p99_m", value(c.p99_m)},
+          {"max_m", value(c.max_m)}};
 }
 
 /// The surface keys, when the map has a surfaces.csv (it needs points.ply).
@@ -171,7 +173,7 @@ void printReport(const json& doc) {
               doc["pose_ate_m"].get<double>(),
               doc["pose"]["ate_first_pose_aligned_m"].get<double>(),
               doc["pose"]["matched"].get<std::size_t>());
-  if (doc.contains("label_check")) {
+  if (doc.contains("label_check") && !doc["label_check"]["median_m"].is_null()) {
     std::printf("points on their labelled surface within 3 sigma: %.4f (median %.4f m)\n",
                 doc["label_check"]["fraction_within_3sigma"].get<double>(),
                 doc["label_check"]["median_m"].get<double>());
@@ -233,6 +235,11 @@ MapEvaluation runEvaluation(const MapEvalArgs& args) {
     return ev;
   }
   const GroundTruth gt = readGroundTruth(args.gt);
+  if (gt.surfaces.empty() && gt.cylinders.empty() && gt.boxes.empty()) {
+    ev.warnings.push_back(args.gt.string() +
+                          " has no surfaces or objects (a voxel world's?): the map's distances "
+                          "to them are null; --gt-octomap scores the map against a .bt");
+  }
   const fs::path poses_txt = folder.file(OutputLayout::kPosesTxt);
   const poses::Trajectory estimated = readMapPoses(poses_txt);
   const PoseErrors pe = comparePoses(estimated, gt.poses);
