@@ -364,9 +364,10 @@ bool LoopClosingBackEnd::apply(const LoopSearchResult& r) {
   return r.found && acceptAfterSolve(r.edge, r.match);
 }
 
-// Synchronous: search and apply now. With workers: start this keyframe's
-// search on its own thread, and apply, in order, the searches whose
-// keyframes are search_latency_keyframes old (waiting for them if need be).
+// Synchronous: search and apply now. With a worker: queue this keyframe's
+// search on it (one search at a time, in keyframe order), and apply, in
+// order, the searches whose keyframes are search_latency_keyframes old
+// (waiting for them if need be).
 // Either way the result depends only on the input, not on the workers' speed.
 bool LoopClosingBackEnd::closeLoop() {
   const auto latency = static_cast<std::size_t>(options_.search_latency_keyframes);
@@ -374,7 +375,9 @@ bool LoopClosingBackEnd::closeLoop() {
     return apply(runLoopSearch(prepareSearch(), options_, match_options_));
   }
   pending_.push_back(
-      std::async(std::launch::async, runLoopSearch, prepareSearch(), options_, match_options_));
+      worker_.submit([search = prepareSearch(), options = options_, match = match_options_] {
+        return runLoopSearch(search, options, match);
+      }));
   return pending_.size() > latency && applyOldest();
 }
 

@@ -33,6 +33,7 @@
 #include <string>
 #include <vector>
 
+#include "pmap/common/serial_worker.h"
 #include "pmap/poses/free_space.h"
 #include "pmap/poses/keyframe.h"
 #include "pmap/poses/loop_closure_options.h"
@@ -154,9 +155,8 @@ class LoopClosingBackEnd {
   Pose2 last_front_;
   bool have_front_ = false;
   double path_at_last_closure_ = 0;
-  /// Searches running on workers (search_latency_keyframes > 0), oldest
+  /// Searches queued on the worker (search_latency_keyframes > 0), oldest
   /// first, each to be applied search_latency_keyframes after its keyframe.
-  /// A std::async future waits for its thread when destroyed.
   std::deque<std::future<LoopSearchResult>> pending_;
   ScanAnchor anchor_;
   std::size_t scans_ = 0;
@@ -166,6 +166,10 @@ class LoopClosingBackEnd {
   OdometryModel odometry_model_;
   OdometryEdges odometry_edges_;
   PathConstraints path_constraints_;
+  /// Runs the searches one after the other on one thread of its own.
+  /// Declared last: destroyed first, its thread joined before the members
+  /// a running search was copied from go away.
+  common::SerialWorker<LoopSearchResult> worker_;
 };
 
 }  // namespace pmap::poses

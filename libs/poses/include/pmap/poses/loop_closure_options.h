@@ -57,10 +57,10 @@ struct LoopClosureOptions {
   double odometry_sigma_deg = 0.5;
   double loop_loss_scale = 1.0;  ///< Cauchy scale of loop edges (whitened)
   /// 0: each keyframe's search runs when the keyframe is added. N > 0: it
-  /// runs on a thread of its own and its result is applied when the keyframe
-  /// N keyframes later is added (waiting for it if need be), so the front
-  /// end goes on meanwhile (at most N searches at once). The same input
-  /// gives the same result whatever the threads' speed.
+  /// is queued on one worker thread (one search at a time, in keyframe
+  /// order) and its result is applied when the keyframe N keyframes later is
+  /// added (waiting for it if need be), so the front end goes on meanwhile.
+  /// The same input gives the same result whatever the threads' speed.
   int search_latency_keyframes = 1;
   /// Each keyframe's edge from the previous one refined point-to-line
   /// against the keyframes of the last refine_map_path_m, placed with the
