@@ -368,7 +368,7 @@ bool LoopClosingBackEnd::apply(const LoopSearchResult& r) {
 // search on it (one search at a time, in keyframe order), and apply, in
 // order, the searches whose keyframes are search_latency_keyframes old
 // (waiting for them if need be).
-// Either way the result depends only on the input, not on the workers' speed.
+// Either way the result depends only on the input, not on the worker's speed.
 bool LoopClosingBackEnd::closeLoop() {
   const auto latency = static_cast<std::size_t>(options_.search_latency_keyframes);
   if (latency == 0) {

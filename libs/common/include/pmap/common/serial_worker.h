@@ -72,7 +72,7 @@ class SerialWorker {
   std::condition_variable wake_;
   std::deque<std::packaged_task<Result()>> queue_;
   bool stop_ = false;
-  std::thread thread_;  ///< last: started after the members it uses exist
+  std::thread thread_;  ///< started by the first submit(), joined by the destructor
 };
 
 }  // namespace pmap::common

@@ -166,9 +166,9 @@ class LoopClosingBackEnd {
   OdometryModel odometry_model_;
   OdometryEdges odometry_edges_;
   PathConstraints path_constraints_;
-  /// Runs the searches one after the other on one thread of its own.
-  /// Declared last: destroyed first, its thread joined before the members
-  /// a running search was copied from go away.
+  /// Runs the searches one after the other on one thread of its own. A
+  /// search holds copies (LoopSearch), nothing of the back end; destroying
+  /// the worker drops the queued searches and joins the running one.
   common::SerialWorker<LoopSearchResult> worker_;
 };
 
