@@ -135,6 +135,54 @@ TEST(LoopClosure, AWorkerThreadClosesTheRingTheSameWayEveryTime) {
   EXPECT_EQ(a.corrected.theta, b.corrected.theta);
 }
 
+// A loop's test runs on a copy of the graph made when its search was
+// prepared; the keyframes added since are leaves of the chain. Kept with
+// keepLoop, the graph must end where solving it whole with the loop puts
+// it, and the test's innovation must be the whole graph's.
+TEST(LoopClosure, ALoopTestedWithoutTheNewestKeyframesKeepsTheirSolve) {
+  std::mt19937 rng(3);
+  std::normal_distribution<double> noise(0.0, 0.02);
+  const auto chain = [&](std::size_t n) {
+    PoseGraph g;
+    std::mt19937 r(5);
+    std::normal_distribution<double> drift(0.0, 0.02);
+    g.addNode({});
+    for (std::size_t i = 1; i < n; ++i) {
+      PoseEdge e;
+      e.from = i - 1;
+      e.to = i;
+      e.measurement = {1.0 + drift(r), drift(r), 0.3 + drift(r)};
+      e.information = Eigen::Vector3d(400, 400, 900).asDiagonal();
+      g.addNode(compose(g.node(i - 1), e.measurement));
+      g.addEdge(e);
+    }
+    return g;
+  };
+  PoseEdge loop;  // keyframe 20 seen from 2: a ring of 21 steps of 0.3 rad closes
+  loop.from = 2;
+  loop.to = 20;
+  loop.measurement = {noise(rng), noise(rng), 0.0};
+  loop.information = Eigen::Vector3d(400, 400, 3000).asDiagonal();
+  loop.loop = true;
+
+  PoseGraph whole = chain(24);
+  const LoopTest reference = testLoop(whole, loop);
+  PoseGraph copy = chain(21);  // made at keyframe 20
+  const LoopTest tested = testLoop(copy, loop);
+  keepLoop(whole, loop, tested.nodes);
+
+  EXPECT_GT(reference.innovation, 1.0);
+  EXPECT_NEAR(tested.innovation, reference.innovation, 1e-6 * reference.innovation);
+  ASSERT_EQ(tested.nodes.size(), 21u);
+  for (std::size_t i = 0; i < whole.size(); ++i) {
+    EXPECT_NEAR(whole.node(i).x, reference.nodes[i].x, 1e-6) << i;
+    EXPECT_NEAR(whole.node(i).y, reference.nodes[i].y, 1e-6) << i;
+    EXPECT_NEAR(wrapAngle(whole.node(i).theta - reference.nodes[i].theta), 0.0, 1e-6) << i;
+  }
+  EXPECT_TRUE(whole.edges().back().loop);
+  EXPECT_TRUE(whole.edges().back().robust);
+}
+
 TEST(LoopClosureOptions, SearchLatencyIsBounded) {
   std::string why;
   LoopClosureOptions o;

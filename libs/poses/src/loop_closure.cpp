@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 
 namespace pmap::poses {
 namespace {
@@ -355,29 +356,78 @@ LoopSearch LoopClosingBackEnd::prepareSearch() const {
   return s;
 }
 
-bool LoopClosingBackEnd::apply(const LoopSearchResult& r) {
+// The job of the newest keyframe's search, with a copy of the graph as it
+// is now when there is a candidate. Its loop, if any, is tested on that copy
+// with the loops that the jobs still pending now keep (the front end will
+// have applied them by the time it applies this one).
+std::function<LoopOutcome()> LoopClosingBackEnd::prepareJob() {
+  LoopSearch search = prepareSearch();
+  std::optional<PoseGraph> graph;
+  if (!search.candidates.empty()) {
+    graph = graph_;
+  }
+  const std::size_t job = jobs_++;
+  const std::size_t first_pending = job - pending_.size();
+  return [search = std::move(search), graph = std::move(graph), options = options_,
+          match = match_options_, job, first_pending, kept = kept_by_jobs_]() mutable {
+    std::deque<KeptLoops::Loop>& loops = kept->loops;
+    while (!loops.empty() && loops.front().job < first_pending) {
+      loops.pop_front();  // in the graph of every job from now on
+    }
+    LoopOutcome out;
+    out.search = runLoopSearch(search, options, match);
+    if (!out.search.found || !graph) {
+      return out;
+    }
+    for (const KeptLoops::Loop& l : loops) {
+      keepLoop(*graph, l.edge, l.nodes);
+    }
+    out.test = testLoop(std::move(*graph), out.search.edge);
+    if (out.test->innovation <= options.max_chi2) {
+      loops.push_back({job, out.search.edge, out.test->nodes});
+    }
+    return out;
+  };
+}
+
+bool LoopClosingBackEnd::apply(const LoopOutcome& outcome) {
+  const LoopSearchResult& r = outcome.search;
   stats_.candidates += r.candidates;
   stats_.rejected_match += r.rejected_match;
   stats_.rejected_ambiguous += r.rejected_ambiguous;
   stats_.rejected_free_space += r.rejected_free_space;
   stats_.search_s += r.search_s;
-  return r.found && acceptAfterSolve(r.edge, r.match);
+  if (!r.found) {
+    return false;
+  }
+  const LoopTest& test = *outcome.test;
+  stats_.solve_s += test.solve_s;
+  if (!(test.innovation <= options_.max_chi2)) {
+    ++stats_.rejected_chi2;
+    return false;
+  }
+  const std::size_t k = r.edge.to;
+  const Pose2 before = graph_.node(k);
+  keepLoop(graph_, r.edge, test.nodes);
+  closures_.push_back({r.edge.from, k, keyframes_[r.edge.from].t, keyframes_[k].t, r.match.pose,
+                       r.match.score, distance(before, graph_.node(k)), 1000.0 * test.solve_s});
+  ++stats_.accepted;
+  path_at_last_closure_ = path_m_;
+  recent_map_.reset();
+  return true;
 }
 
 // Synchronous: search and apply now. With a worker: queue this keyframe's
-// search on it (one search at a time, in keyframe order), and apply, in
-// order, the searches whose keyframes are search_latency_keyframes old
-// (waiting for them if need be).
-// Either way the result depends only on the input, not on the worker's speed.
+// search on it (one job at a time, in keyframe order), and apply, in order,
+// the searches whose keyframes are search_latency_keyframes old (waiting for
+// them if need be). Either way the result depends only on the input, not
+// on the worker's speed.
 bool LoopClosingBackEnd::closeLoop() {
   const auto latency = static_cast<std::size_t>(options_.search_latency_keyframes);
   if (latency == 0) {
-    return apply(runLoopSearch(prepareSearch(), options_, match_options_));
+    return apply(prepareJob()());
   }
-  pending_.push_back(
-      worker_.submit([search = prepareSearch(), options = options_, match = match_options_] {
-        return runLoopSearch(search, options, match);
-      }));
+  pending_.push_back(worker_.submit(prepareJob()));
   return pending_.size() > latency && applyOldest();
 }
 
@@ -385,9 +435,9 @@ bool LoopClosingBackEnd::applyOldest() {
   const auto t0 = Clock::now();
   // Out of the queue before get(): a search that threw leaves no future
   // without a state behind.
-  std::future<LoopSearchResult> oldest = std::move(pending_.front());
+  std::future<LoopOutcome> oldest = std::move(pending_.front());
   pending_.pop_front();
-  const LoopSearchResult r = oldest.get();
+  const LoopOutcome r = oldest.get();
   stats_.wait_s += secondsSince(t0);
   return apply(r);
 }
@@ -427,9 +477,9 @@ bool LoopClosingBackEnd::finalSolve() {
   return true;
 }
 
-// Solves the graph with the loop and keeps it only if the graph can agree
-// with it: the loop's innovation, the rise of the objective when the graph
-// follows it (the loop under a plain quadratic cost while it is tested),
+// Which loops are kept: solved with the loop under a plain quadratic cost,
+// the graph must agree with it. The loop's innovation, the rise of the
+// objective when the graph follows it,
 // 2 (F_after - F_before) = e^T (Sigma_graph + Sigma_loop)^-1 e for linear
 // Gaussian edges (e: the loop's error against the graph's estimate, Sigma_graph
 // the covariance of the two keyframes' relative pose), must be at most
@@ -437,36 +487,41 @@ bool LoopClosingBackEnd::finalSolve() {
 // for a true loop after metres of drift as often as it followed it (ACES: a
 // 1.3 m closure refused at chi2 180-390 in one run, accepted at 0.06 in
 // another).
-bool LoopClosingBackEnd::acceptAfterSolve(const PoseEdge& edge, const ScanMatch& match) {
+LoopTest testLoop(PoseGraph graph, const PoseEdge& edge) {
   const auto t0 = Clock::now();
-  std::vector<Pose2> before(graph_.size());
-  for (std::size_t i = 0; i < graph_.size(); ++i) {
-    before[i] = graph_.node(i);
-  }
-  const double cost_before = graph_.cost();
+  LoopTest t;
+  const double cost_before = graph.cost();
   PoseEdge tested = edge;
   tested.robust = false;
-  graph_.addEdge(tested);
-  graph_.optimize();
-  const double innovation = 2.0 * (graph_.cost() - cost_before);
-  const double solve_s = secondsSince(t0);
-  stats_.solve_s += solve_s;
-  if (!(innovation <= options_.max_chi2)) {
-    graph_.removeLastLoopEdge();
-    for (std::size_t i = 0; i < before.size(); ++i) {
-      graph_.setNode(i, before[i]);
-    }
-    ++stats_.rejected_chi2;
-    return false;
+  graph.addEdge(tested);
+  graph.optimize();
+  t.innovation = 2.0 * (graph.cost() - cost_before);
+  t.nodes.resize(graph.size());
+  for (std::size_t i = 0; i < graph.size(); ++i) {
+    t.nodes[i] = graph.node(i);
   }
-  graph_.makeLastEdgeRobust();
-  const std::size_t k = edge.to;
-  closures_.push_back({edge.from, k, keyframes_[edge.from].t, keyframes_[k].t, match.pose,
-                       match.score, distance(before[k], graph_.node(k)), 1000.0 * solve_s});
-  ++stats_.accepted;
-  path_at_last_closure_ = path_m_;
-  recent_map_.reset();
-  return true;
+  t.solve_s = secondsSince(t0);
+  return t;
+}
+
+void keepLoop(PoseGraph& graph, const PoseEdge& edge, const std::vector<Pose2>& nodes) {
+  PoseEdge kept = edge;
+  kept.robust = true;
+  graph.addEdge(kept);
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    graph.setNode(i, nodes[i]);
+  }
+  const std::vector<PoseEdge>& edges = graph.edges();
+  for (std::size_t i = nodes.size(); i < graph.size(); ++i) {
+    // Its keyframe edge (addKeyframe), searched from the newest edge back.
+    std::size_t e = edges.size();
+    while (e-- > 0 && (edges[e].loop || edges[e].to != i || edges[e].from + 1 != i)) {
+    }
+    if (e >= edges.size()) {
+      throw std::logic_error("a keyframe without its edge");
+    }
+    graph.setNode(i, compose(graph.node(i - 1), edges[e].measurement));
+  }
 }
 
 }  // namespace pmap::poses

@@ -107,15 +107,6 @@ bool PoseGraph::hasLoops() const {
   return std::any_of(edges_.begin(), edges_.end(), [](const PoseEdge& e) { return e.loop; });
 }
 
-void PoseGraph::removeLastLoopEdge() {
-  for (auto it = edges_.rbegin(); it != edges_.rend(); ++it) {
-    if (it->loop && !it->path) {
-      edges_.erase(std::next(it).base());
-      return;
-    }
-  }
-}
-
 double PoseGraph::chi2(const PoseEdge& edge) const {
   const Pose2& a = nodes_[edge.from];
   const Pose2& b = nodes_[edge.to];
@@ -133,12 +124,6 @@ double PoseGraph::cost() const {
     sum += (e.loop && e.robust) ? a2 * std::log1p(s / a2) : s;  // Ceres' CauchyLoss
   }
   return 0.5 * sum;
-}
-
-void PoseGraph::makeLastEdgeRobust() {
-  if (!edges_.empty()) {
-    edges_.back().robust = true;
-  }
 }
 
 PoseGraphResult PoseGraph::optimize() {

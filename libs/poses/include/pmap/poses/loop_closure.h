@@ -17,16 +17,19 @@
 // guess (scan_matcher.h); a match is accepted when its score passes, when
 // it is unique (not on the search window's edge, no other pose of the window
 // at least ambiguity_distance_m away scoring max_ambiguity of it: corridors
-// alias along their axis), when the beams' free space agrees, and when,
-// after the graph is solved with it (Cauchy
-// loss on loop edges), its residual stays below max_chi2: a loop that the
-// rest of the graph cannot agree with is taken out again. The work per
-// keyframe is bounded by the candidate count and the window's size.
+// alias along their axis), when the beams' free space agrees, and when the
+// graph can agree with it: solved with the loop, the graph's objective must
+// not rise by more than max_chi2 / 2 (the innovation test; a loop that the
+// rest of the graph cannot agree with is refused). Once kept, a loop edge is
+// under a Cauchy loss. The work per keyframe is bounded by the candidate
+// count and the window's size. With search_latency_keyframes > 0 the search
+// and the test both run on a worker thread, on copies.
 #pragma once
 
 #include <Eigen/Core>
 #include <cstddef>
 #include <deque>
+#include <functional>
 #include <future>
 #include <memory>
 #include <optional>
@@ -82,8 +85,46 @@ struct LoopClosureStats {
   std::size_t path_constraints = 0;           ///< keyframe-to-submap edges in the last solve
   std::size_t path_constraints_rejected = 0;  ///< matches the graph disagreed with
   double search_s = 0;  ///< wall time of candidate search and matching (worker thread or not)
-  double solve_s = 0;   ///< wall time of the graph solves
+  double solve_s = 0;   ///< wall time of the loops' graph solves (worker thread or not)
   double wait_s = 0;    ///< time the front end waited for a worker's search
+};
+
+/// A loop's test (LoopClosingBackEnd, "Which loops are kept"): a copy of
+/// the graph solved with the loop under a plain quadratic cost.
+struct LoopTest {
+  double innovation = 0;     ///< 2 (F_after - F_before)
+  std::vector<Pose2> nodes;  ///< the copy's nodes after the solve
+  double solve_s = 0;        ///< the solve's wall time
+};
+
+/// `graph` solved with `edge` added (not under the robust loss).
+LoopTest testLoop(PoseGraph graph, const PoseEdge& edge);
+
+/// `graph` with a kept loop: the edge under the robust loss, the nodes
+/// where its test's solve put them (`nodes`, the first of the graph's) and
+/// the keyframes added since then (leaves of the chain: only their keyframe
+/// edge joins them to the rest) moved along with their predecessors, as that
+/// solve would have left them.
+void keepLoop(PoseGraph& graph, const PoseEdge& edge, const std::vector<Pose2>& nodes);
+
+/// A keyframe's search and, when it found a loop, that loop's test on the
+/// graph as the back end will have it when the outcome is applied.
+struct LoopOutcome {
+  LoopSearchResult search;
+  std::optional<LoopTest> test;
+};
+
+/// The loops kept by the worker's jobs, so that a later job can test its
+/// loop on the graph with them although the front end had not applied them
+/// yet when the job was prepared. Touched only by the jobs, which run one
+/// at a time.
+struct KeptLoops {
+  struct Loop {
+    std::size_t job = 0;
+    PoseEdge edge;
+    std::vector<Pose2> nodes;
+  };
+  std::deque<Loop> loops;
 };
 
 class LoopClosingBackEnd {
@@ -140,9 +181,9 @@ class LoopClosingBackEnd {
   std::vector<Rays> scansAround(std::size_t centre, double half_path_m, bool optimised,
                                 bool only_older) const;
   LoopSearch prepareSearch() const;
-  bool apply(const LoopSearchResult& result);
+  std::function<LoopOutcome()> prepareJob();
+  bool apply(const LoopOutcome& outcome);
   bool applyOldest();
-  bool acceptAfterSolve(const PoseEdge& edge, const ScanMatch& match);
   bool finalSolve();
 
   LoopClosureOptions options_;
@@ -157,7 +198,9 @@ class LoopClosingBackEnd {
   double path_at_last_closure_ = 0;
   /// Searches queued on the worker (search_latency_keyframes > 0), oldest
   /// first, each to be applied search_latency_keyframes after its keyframe.
-  std::deque<std::future<LoopSearchResult>> pending_;
+  std::deque<std::future<LoopOutcome>> pending_;
+  std::size_t jobs_ = 0;  ///< searches prepared so far
+  std::shared_ptr<KeptLoops> kept_by_jobs_ = std::make_shared<KeptLoops>();
   ScanAnchor anchor_;
   std::size_t scans_ = 0;
   /// The keyframes of the last refine_map_path_m in the newest one's frame,
@@ -166,10 +209,11 @@ class LoopClosingBackEnd {
   OdometryModel odometry_model_;
   OdometryEdges odometry_edges_;
   PathConstraints path_constraints_;
-  /// Runs the searches one after the other on one thread of its own. A
-  /// search holds copies (LoopSearch), nothing of the back end; destroying
-  /// the worker drops the queued searches and joins the running one.
-  common::SerialWorker<LoopSearchResult> worker_;
+  /// Runs the searches (and their loops' tests) one after the other on one
+  /// thread of its own. A job holds copies (LoopSearch, the graph), nothing
+  /// of the back end; destroying the worker drops the queued jobs and joins
+  /// the running one.
+  common::SerialWorker<LoopOutcome> worker_;
 };
 
 }  // namespace pmap::poses

@@ -40,7 +40,7 @@ struct PoseEdge {
   bool loop = false;                                          ///< robust loss
   bool path = false;  ///< (with loop) a path constraint, not a loop closure (path_constraints.h)
   /// (with loop) under the robust loss; false while a new loop is tested
-  /// (LoopClosingBackEnd: the graph must follow it fully to be judged).
+  /// (testLoop in loop_closure.h: the graph must follow it fully to be judged).
   bool robust = true;
 };
 
@@ -71,8 +71,6 @@ class PoseGraph {
   void setEdge(std::size_t index, const Pose2& measurement, const Eigen::Matrix3d& information);
   /// Whether any loop edge is in the graph.
   bool hasLoops() const;
-  /// Removes the last loop edge added (a closure refused after solving).
-  void removeLastLoopEdge();
 
   /// Optimises every node but the first. Throws ProcessingError if Ceres
   /// reports a failure.
@@ -89,8 +87,6 @@ class PoseGraph {
   /// over edges of rho(e^T I e), rho the Cauchy loss on robust loop edges
   /// and the identity elsewhere.
   double cost() const;
-  /// Puts the last edge under the robust loss (a tested loop, accepted).
-  void makeLastEdgeRobust();
 
  private:
   PoseGraphOptions options_;
