@@ -183,6 +183,25 @@ TEST(LoopClosure, ALoopTestedWithoutTheNewestKeyframesKeepsTheirSolve) {
   EXPECT_TRUE(whole.edges().back().robust);
 }
 
+// The worker tests each loop on its copy of the graph plus the loops that
+// the jobs still pending at the copy kept: with every test made again on the
+// back end's own graph when applied (verify_worker_tests throws on a
+// mismatch), the ring closes at latencies 1 and 2, with loops in
+// consecutive keyframes.
+TEST(LoopClosure, TheWorkersLoopTestsAreTheBackEndsOwn) {
+  const auto world = ringWorld();
+  const auto path = ringPath(2);
+  for (const int latency : {1, 2}) {
+    LoopClosureOptions o = enabled();
+    o.search_latency_keyframes = latency;
+    o.verify_worker_tests = true;
+    Drive r;
+    ASSERT_NO_THROW(r = drive(world, path, 0.05, o)) << "latency " << latency;
+    EXPECT_GE(r.stats.accepted, 2u) << "latency " << latency;
+    EXPECT_LT(r.corrected_error_m, 0.25) << "latency " << latency;
+  }
+}
+
 TEST(LoopClosureOptions, SearchLatencyIsBounded) {
   std::string why;
   LoopClosureOptions o;

@@ -80,13 +80,13 @@ struct LoopClosureStats {
   std::size_t rejected_match = 0;       ///< no pose of the window scored min_score
   std::size_t rejected_ambiguous = 0;   ///< another pose of the window scored nearly as well
   std::size_t rejected_free_space = 0;  ///< the best pose contradicts the beams' free space
-  std::size_t rejected_chi2 = 0;        ///< taken out again after solving
+  std::size_t rejected_chi2 = 0;        ///< refused by the innovation test
   std::size_t accepted = 0;
   std::size_t path_constraints = 0;           ///< keyframe-to-submap edges in the last solve
   std::size_t path_constraints_rejected = 0;  ///< matches the graph disagreed with
   double search_s = 0;  ///< wall time of candidate search and matching (worker thread or not)
   double solve_s = 0;   ///< wall time of the loops' graph solves (worker thread or not)
-  double wait_s = 0;    ///< time the front end waited for a worker's search
+  double wait_s = 0;    ///< time the front end waited for a worker's job (search and test)
 };
 
 /// A loop's test (LoopClosingBackEnd, "Which loops are kept"): a copy of
@@ -102,9 +102,10 @@ LoopTest testLoop(PoseGraph graph, const PoseEdge& edge);
 
 /// `graph` with a kept loop: the edge under the robust loss, the nodes
 /// where its test's solve put them (`nodes`, the first of the graph's) and
-/// the keyframes added since then (leaves of the chain: only their keyframe
-/// edge joins them to the rest) moved along with their predecessors, as that
-/// solve would have left them.
+/// the keyframes added since then moved along their keyframe edges, as a
+/// solve of the whole graph would have left them: they are the chain's
+/// dangling end (no loop reaches them, only keyframe edges join them), whose
+/// residuals are zero at the optimum.
 void keepLoop(PoseGraph& graph, const PoseEdge& edge, const std::vector<Pose2>& nodes);
 
 /// A keyframe's search and, when it found a loop, that loop's test on the

@@ -62,6 +62,13 @@ struct LoopClosureOptions {
   /// added (waiting for it if need be), so the front end goes on meanwhile.
   /// The same input gives the same result whatever the threads' speed.
   int search_latency_keyframes = 1;
+  /// Tests and debugging (not read from the ini): each loop the worker
+  /// tested is tested again on the front end's own graph when applied, and
+  /// std::logic_error is thrown when the two disagree (beyond 5 mm or 5 mrad
+  /// in a node, 0.01 + 0.1 % in the innovation): the worker's copy with
+  /// its kept loops must be the front end's graph without the newest
+  /// keyframes.
+  bool verify_worker_tests = false;
   /// Each keyframe's edge from the previous one refined point-to-line
   /// against the keyframes of the last refine_map_path_m, placed with the
   /// graph's poses (scan_refiner.h); its information from that match.
