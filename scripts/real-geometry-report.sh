@@ -81,6 +81,54 @@ print("%d horizontal surfaces (the largest: %s points, %.2f m below the sensor; 
 PY
 )
 
+# The cluttered simulated world (config/worlds/cluttered.json, written by
+# scripts/make-cluttered-world.py) at 2 and 5 cm range noise, with true and
+# ICP poses, the shipped configs (default.ini, sigma5.ini), online.
+: > "$work/cluttered.txt"
+for s in 0.02 0.05; do
+  "$bin/indoor-sim" --world config/worlds/cluttered.json --seed 1 --sigma "$s" --no-cameras --quiet \
+    --out "$work/cl-$s" 2>/dev/null
+  ini=config/default.ini
+  [ "$s" = 0.05 ] && ini=config/sigma5.ini
+  for poses in true icp; do
+    extra=()
+    [ "$poses" = true ] && extra=(--poses "$work/cl-$s.poses.txt")
+    out="$work/clmap-$s-$poses"
+    "$bin/planar-mapper" --rawlog "$work/cl-$s.rawlog" "${extra[@]}" --config "$ini" --out "$out" -q \
+      --no-textures 2>/dev/null
+    "$bin/map-eval" --map "$out" --gt "$work/cl-$s.gt.json" --out "$out/eval.json" -q 2>/dev/null
+    echo "$s $poses $out" >> "$work/cluttered.txt"
+    echo "real-geometry: cluttered world sigma $s, $poses poses" >&2
+  done
+done
+cluttered_table=$(python3 - "$work/cluttered.txt" <<'PY'
+import json, os, sys
+print("| σ (cm) | poses | explained | ratio counting polygons | surfaces | fine triangles "
+      "| walls matched / eligible | all matched / eligible | walls mapped twice > 3σ apart "
+      "| EM p99 per scan (ms) | last tenth ÷ second (EM median) | pose ATE (m) |")
+print("|" + "---|" * 12)
+for line in open(sys.argv[1]):
+    s, poses, d = line.split()
+    sm = json.load(open(os.path.join(d, "summary.json")))
+    e = json.load(open(os.path.join(d, "eval.json")))
+    sigma = float(s)
+    kinds = e["matched_by_kind"]
+    walls = [k for k in kinds if k in ("wall", "room_wall")]
+    wm = sum(kinds[k]["matched"] for k in walls)
+    wg = sum(kinds[k]["gt"] for k in walls)
+    twice = [p for p in e["per_surface"] if p["kind"] in ("wall", "room_wall")
+             and p.get("matching_spread_m", 0) > 3 * sigma]
+    dec = sm["em_per_scan_ms_by_decile"]
+    ratio = (sm["raw_triangles"] / 2) / max(1, sm["surfaces"] + sm["fine_triangles"])
+    print("| %.0f | %s | %.1f %% | 1:%.0f | %d | %d | %d / %d | %d / %d | %d%s | %.2f | %.2f | %.3f |" % (
+        100 * sigma, "true" if poses == "true" else "ICP", 100 * sm["explained_fraction"], ratio,
+        sm["surfaces"], sm["fine_triangles"], wm, wg, e["matched_surfaces"], e["gt_surfaces"],
+        len(twice), (" (" + ", ".join("%.2f m" % p["matching_spread_m"] for p in twice) + ")") if twice else "",
+        sm["em_per_scan_ms"]["p99"], dec[9] / dec[1] if dec[1] > 0 else float("nan"),
+        e["pose_ate_m"] if e.get("pose_ate_m") is not None else float("nan")))
+PY
+)
+
 if /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then
   /usr/bin/python3 scripts/plot_surfaces.py "$work/k1/points.ply" doc/images/real-rgbd-surfaces.png \
     "tests_rgbd.rawlog, default mode: $(json "$k" "d['surfaces']") surfaces, colour = surface, black = outlier class"
@@ -175,9 +223,35 @@ $(json "$v" "'%.2f' % d['timing_s']['em']") s, $(json "$v" "d['em_message']").
 |---|---|---|---|
 $(surface_table "$work/v")
 
+## A cluttered simulated world
+\`config/worlds/cluttered.json\` (written by \`scripts/make-cluttered-world.py\`):
+an L-shaped office corridor (legs 20 m and 16.5 m, 2.4 m wide, 2.8 m high)
+turned 23° off the axes, with a slanted end wall 30° off square, three rooms
+with desks, shelves and a cabinet seen through open doorways, five doors,
+furniture along the walls (a radiator, a column, bins, cabinets, a shelf, a
+pillar) and ceiling clutter (nine lamps, a duct, a beam across the corridor,
+a pipe); the lasers have the errors of real sensors (doc/simulator.md,
+\`noise\`: range noise growing by 2 mm per metre and with the incidence, no
+return beyond 85° from the normal, 2 % lost returns, 0.5 % spurious ones,
+mixed returns at half of the depth edges). \`indoor-sim --seed 1 --sigma S
+--no-cameras\`, then \`planar-mapper\` online (the default mode) with
+\`config/default.ini\` (σ 2 cm) or \`config/sigma5.ini\` (σ 5 cm),
+\`--no-textures\`, with the true poses (\`--poses\`) or the ICP front end's,
+and \`map-eval --gt\`. "Walls mapped twice": matched walls whose matching map
+surfaces lie more than 3σ apart (map-eval's \`matching_spread_m\`); "last
+tenth ÷ second": summary.json's \`em_per_scan_ms_by_decile\`, the median EM
+time per scan in the last tenth of the run over the second tenth. One run
+each on a shared machine.
+
+${cluttered_table}
+
+Issue 16 asks, on such worlds: explained ≥ 95 %, ratio counting polygons
+≥ 1:200, walls matched ≥ 95 % of eligible, no wall mapped twice more than
+3σ apart, EM p99 per scan ≤ 2 ms, last tenth ÷ second ≤ 1.2.
+
 ## Not measured here (issue 16)
-The cluttered simulated worlds, the voxel mode of the simulator, the peer
-benchmark (PCL, CGAL), the 5M-point scaling table and \`sigma_m = auto\` are
-not built yet.
+A second cluttered world, glass, people walking through, the peer benchmark
+(PCL, CGAL) and the 5M-point scaling table are not built yet; the voxel
+mode (geb079) and \`sigma_m = auto\` are in doc/simulator.md and doc/em.md.
 EOM
 echo "wrote doc/real-geometry.md"

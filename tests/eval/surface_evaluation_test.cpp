@@ -155,6 +155,32 @@ TEST(SurfaceEvaluation, SplitWallIsOneMatchedSurfaceWithTwoMapSurfaces) {
   EXPECT_NEAR(*e.labels.recall, 1.0, 1e-12);                 // both halves match the wall
 }
 
+// A wall mapped twice, as two parallel surfaces 0.15 m apart (one with its
+// normal flipped): the spread of the matching planes is their distance; a
+// split wall in one plane has none.
+TEST(SurfaceEvaluation, ParallelDuplicatesShowTheirSpread) {
+  SurfaceTestWorld w;
+  w.addRectangle(1, "wall", rectangle({0, 0, 0}, {10, 0, 0}, {0, 0, 3}));
+  w.addGrid(1, 5, 8, 30, 0.0, 0.4);
+  w.addGrid(1, 6, 12, 30, 0.5, 1.0);
+  const MapSurface in_plane = surfaceFromCorners(5, rectangle({0, 0, 0}, {4, 0, 0}, {0, 0, 3}));
+  const MapSurface behind = surfaceFromCorners(6, rectangle({5, 0.15, 0}, {5, 0, 0}, {0, 0, 3}));
+  const MapSurface flipped = surfaceFromCorners(6, rectangle({10, 0.15, 0}, {-5, 0, 0}, {0, 0, 3}));
+  EXPECT_NEAR(evaluateSurfaces(w.gt, w.points, {in_plane, behind}, Rigid2D{})
+                  .per_surface[0]
+                  .matching_spread_m,
+              0.15, 1e-9);
+  EXPECT_NEAR(evaluateSurfaces(w.gt, w.points, {in_plane, flipped}, Rigid2D{})
+                  .per_surface[0]
+                  .matching_spread_m,
+              0.15, 1e-9);
+  const MapSurface split = surfaceFromCorners(6, rectangle({5, 0, 0}, {5, 0, 0}, {0, 0, 3}));
+  EXPECT_NEAR(evaluateSurfaces(w.gt, w.points, {in_plane, split}, Rigid2D{})
+                  .per_surface[0]
+                  .matching_spread_m,
+              0.0, 1e-12);
+}
+
 TEST(SurfaceEvaluation, UnmatchedSurfacesAreListedWithTheirHits) {
   SurfaceTestWorld w = corridor();
   std::vector<MapSurface> map = perfectMap(w);

@@ -26,6 +26,7 @@ SurfaceEvaluation twoOfThree() {
     s.normal_error_deg = id;
     s.offset_error_m = 0.01 * id;
     s.corner_error_m = 0.1 * id;
+    s.matching_spread_m = 0.05 * (id - 1);
     e.normal_error_deg.add(s.normal_error_deg);
     e.offset_error_m.add(s.offset_error_m);
     e.corner_error_m.add(s.corner_error_m);
@@ -61,6 +62,7 @@ TEST(SurfaceReport, KeysAtTheTopLevel) {
   EXPECT_EQ(p["points"], 900);
   EXPECT_EQ(p["kind"], "wall");
   EXPECT_NEAR(p["corner_error_m"].get<double>(), 0.2, 1e-12);
+  EXPECT_NEAR(p["matching_spread_m"].get<double>(), 0.05, 1e-12);
   EXPECT_EQ(doc["label_recall"], 0.9);
   EXPECT_EQ(doc["label_precision"], 0.8);
   EXPECT_EQ(doc["clutter_points"], 50);

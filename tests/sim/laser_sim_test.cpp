@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose3D.h>
 
@@ -11,6 +15,12 @@
 
 namespace pmap::sim {
 namespace {
+
+NoiseOptions gaussian(double sigma_m) {
+  NoiseOptions n;
+  n.range_sigma_m = sigma_m;
+  return n;
+}
 
 World straightCorridor() {
   return buildWorld(parseWorldText(
@@ -68,7 +78,8 @@ TEST(LaserSim, StraightUpBeamHitsTheCeilingAtHeightMinusMount) {
   const World w = straightCorridor();
   const RayCaster caster(w);
   Rng rng(1);
-  const SimulatedScan s = simulateScan(caster, Pose2D{5.0, 0.3, 0.4}, w.sensors.laser_v, 0.0, rng);
+  const SimulatedScan s =
+      simulateScan(caster, Pose2D{5.0, 0.3, 0.4}, w.sensors.laser_v, gaussian(0.0), rng);
   EXPECT_NEAR(s.true_ranges_m[90], 2.5 - 0.3, 1e-9);
   EXPECT_NEAR(s.ranges_m[90], 2.2f, 1e-6);
   EXPECT_TRUE(s.valid[90]);
@@ -84,7 +95,7 @@ TEST(LaserSim, MissesAreInvalidAtMaxRange) {
   Rng rng(1);
   LaserOptions laser = w.sensors.laser_h;
   laser.max_range_m = 5.0;
-  const SimulatedScan s = simulateScan(caster, Pose2D{10.0, 0.0, 0.0}, laser, 0.02, rng);
+  const SimulatedScan s = simulateScan(caster, Pose2D{10.0, 0.0, 0.0}, laser, gaussian(0.02), rng);
   EXPECT_FALSE(s.valid[90]);  // straight ahead, 10 m to the end wall
   EXPECT_EQ(s.ranges_m[90], 5.0f);
   EXPECT_EQ(s.hit_ids[90], -1);
@@ -100,7 +111,8 @@ TEST(LaserSim, NoisyRangeBeyondMaxRangeBecomesInvalid) {
   int invalid = 0;
   for (int seed = 0; seed < 20; ++seed) {
     Rng rng(static_cast<std::uint64_t>(seed));
-    const SimulatedScan s = simulateScan(caster, Pose2D{10.0, 0.0, 0.0}, laser, 0.02, rng);
+    const SimulatedScan s =
+        simulateScan(caster, Pose2D{10.0, 0.0, 0.0}, laser, gaussian(0.02), rng);
     EXPECT_GE(s.hit_ids[0], 0);  // the true ray hits the wall either way
     if (!s.valid[0]) {
       ++invalid;
@@ -111,6 +123,151 @@ TEST(LaserSim, NoisyRangeBeyondMaxRangeBecomesInvalid) {
   }
   EXPECT_GT(invalid, 3);
   EXPECT_LT(invalid, 17);
+}
+
+// The beam at angle `deg` (0 ahead, positive to the left) of the 181-beam
+// horizontal laser.
+std::size_t beamAt(int deg) {
+  return static_cast<std::size_t>(90 + deg);
+}
+
+// The range errors of one beam over `runs` scans from (10, 0, 0).
+std::vector<double> rangeErrors(const RayCaster& caster, const LaserOptions& laser,
+                                const NoiseOptions& noise, std::size_t beam, int runs) {
+  std::vector<double> out;
+  for (int seed = 0; seed < runs; ++seed) {
+    Rng rng(static_cast<std::uint64_t>(seed));
+    const SimulatedScan s = simulateScan(caster, Pose2D{10.0, 0.0, 0.0}, laser, noise, rng);
+    out.push_back(s.ranges_m[beam] - s.true_ranges_m[beam]);
+  }
+  return out;
+}
+
+double rms(const std::vector<double>& v) {
+  double sum = 0;
+  for (const double x : v) {
+    sum += x * x;
+  }
+  return std::sqrt(sum / static_cast<double>(v.size()));
+}
+
+// Real lasers (LaserErrorOptions): the noise grows with the range and with
+// the incidence. From (10, 0) in a 2 m corridor whose end wall is 10 m ahead:
+// the beam ahead meets the end wall head on at 10 m, the beam 90 deg to the
+// right the side wall head on at 1 m, the one 30 deg right of ahead the side
+// wall at 2 m and 60 deg from its normal (1 / cos = 2).
+TEST(LaserSim, RangeNoiseFollowsRangeAndIncidence) {
+  const World w = straightCorridor();
+  const RayCaster caster(w);
+  const LaserOptions& laser = w.sensors.laser_h;
+  NoiseOptions by_range = gaussian(0.0);
+  by_range.laser.sigma_per_m = 0.01;
+  EXPECT_NEAR(rms(rangeErrors(caster, laser, by_range, beamAt(0), 400)), 0.10, 0.01);
+  EXPECT_NEAR(rms(rangeErrors(caster, laser, by_range, beamAt(-90), 400)), 0.01, 0.001);
+  NoiseOptions by_incidence = gaussian(0.01);
+  by_incidence.laser.incidence_factor = 1.0;
+  EXPECT_NEAR(rms(rangeErrors(caster, laser, by_incidence, beamAt(-90), 400)), 0.01, 0.001);
+  EXPECT_NEAR(rms(rangeErrors(caster, laser, by_incidence, beamAt(-30), 400)), 0.02, 0.002);
+  // Off, the same draws as before the effects existed: the Gaussian alone.
+  const std::vector<double> plain = rangeErrors(caster, laser, gaussian(0.01), beamAt(-30), 50);
+  NoiseOptions off = gaussian(0.01);
+  off.laser.mixed_pixel_jump_m = 5.0;  // no effect without its probability
+  EXPECT_EQ(plain, rangeErrors(caster, laser, off, beamAt(-30), 50));
+}
+
+// Beams meeting the side walls within 10 deg of grazing (5.7-10 deg off the
+// axis ahead) are lost; the end wall and steeper side-wall beams are not.
+TEST(LaserSim, GrazingBeamsReturnNothing) {
+  const World w = straightCorridor();
+  const RayCaster caster(w);
+  NoiseOptions noise = gaussian(0.0);
+  noise.laser.grazing_dropout_deg = 80.0;
+  Rng rng(1);
+  const SimulatedScan s =
+      simulateScan(caster, Pose2D{10.0, 0.0, 0.0}, w.sensors.laser_h, noise, rng);
+  for (const int deg : {-9, -8, -7, 7, 8, 9}) {
+    EXPECT_FALSE(s.valid[beamAt(deg)]) << deg;
+    EXPECT_GE(s.hit_ids[beamAt(deg)], 0) << deg;  // the true ray still hits
+  }
+  for (const int deg : {-30, -11, -3, 0, 3, 11, 30}) {
+    EXPECT_TRUE(s.valid[beamAt(deg)]) << deg;
+  }
+}
+
+// Lost and spurious returns come at their probabilities; a spurious one is
+// short of the true hit and lies on no object.
+TEST(LaserSim, DropoutsAndSpuriousReturnsComeAtTheirRates) {
+  const World w = straightCorridor();
+  const RayCaster caster(w);
+  NoiseOptions noise = gaussian(0.0);
+  noise.laser.dropout_probability = 0.3;
+  noise.laser.spurious_probability = 0.1;
+  int beams = 0, lost = 0, spurious = 0;
+  for (int seed = 0; seed < 40; ++seed) {
+    Rng rng(static_cast<std::uint64_t>(seed));
+    const SimulatedScan s =
+        simulateScan(caster, Pose2D{10.0, 0.0, 0.0}, w.sensors.laser_h, noise, rng);
+    for (std::size_t i = 0; i < s.ranges_m.size(); ++i) {
+      ++beams;
+      if (s.valid[i] && s.hit_ids[i] < 0) {
+        ++spurious;
+        EXPECT_LT(s.ranges_m[i], s.true_ranges_m[i]);
+        EXPECT_GE(s.ranges_m[i], 0.1f);
+      } else if (!s.valid[i]) {
+        ++lost;
+      }
+    }
+  }
+  // 7,240 beams: the binomial's standard deviation is under 0.6 % of them.
+  EXPECT_NEAR(static_cast<double>(spurious) / beams, 0.1, 0.02);
+  EXPECT_NEAR(static_cast<double>(lost) / beams, 0.9 * 0.3, 0.03);
+}
+
+// At a depth edge (a column 4.7 m ahead in front of the end wall 10 m
+// ahead), mixed returns lie between the two surfaces, on neither; along the
+// side walls met at grazing angles, where neighbouring ranges jump too, the
+// spot stays on the wall.
+TEST(LaserSim, MixedPixelsLieBetweenTheTwoSidesOfADepthEdge) {
+  const World w = buildWorld(parseWorldText(
+      R"({"name": "c", "corridors": [{"centreline": [[0, 0], [20, 0]], "width_m": 2.0,
+          "height_m": 2.5}], "clutter": [{"kind": "column", "shape": "cylinder",
+          "centre": [15, 0], "radius_m": 0.3, "z_min_m": 0.0, "z_max_m": 2.5}],
+          "path": {"waypoints": [[1, 0], [19, 0]]}})",
+      "w.json"));
+  const RayCaster caster(w);
+  const Pose2D robot{10.0, 0.0, 0.0};
+  Rng plain_rng(1);
+  const SimulatedScan truth =
+      simulateScan(caster, robot, w.sensors.laser_h, gaussian(0.0), plain_rng);
+  NoiseOptions noise = gaussian(0.0);
+  noise.laser.mixed_pixel_probability = 1.0;
+  Rng rng(1);
+  const SimulatedScan s = simulateScan(caster, robot, w.sensors.laser_h, noise, rng);
+  int mixed = 0, grazing_jumps = 0;
+  for (std::size_t i = 1; i + 1 < s.ranges_m.size(); ++i) {
+    bool edge = false;
+    double lo = truth.true_ranges_m[i], hi = lo;
+    for (const std::size_t j : {i - 1, i + 1}) {
+      const bool jump = std::abs(truth.true_ranges_m[j] - truth.true_ranges_m[i]) > 0.3;
+      if (jump && truth.hit_ids[j] != truth.hit_ids[i]) {
+        edge = true;
+        lo = std::min(lo, truth.true_ranges_m[j]);
+        hi = std::max(hi, truth.true_ranges_m[j]);
+      }
+      grazing_jumps += jump && truth.hit_ids[j] == truth.hit_ids[i] ? 1 : 0;
+    }
+    if (!edge) {
+      EXPECT_NEAR(s.ranges_m[i], truth.ranges_m[i], 1e-5) << i;  // on its surface, exactly
+      EXPECT_EQ(s.hit_ids[i], truth.hit_ids[i]) << i;
+      continue;
+    }
+    ++mixed;
+    EXPECT_EQ(s.hit_ids[i], -1) << i;
+    EXPECT_GT(s.ranges_m[i], lo - 1e-5) << i;
+    EXPECT_LT(s.ranges_m[i], hi + 1e-5) << i;
+  }
+  EXPECT_GE(mixed, 4);           // both sides of both of the column's edges
+  EXPECT_GT(grazing_jumps, 10);  // the side walls far ahead: jumps, but no edge
 }
 
 }  // namespace

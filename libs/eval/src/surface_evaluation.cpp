@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <unordered_set>
 
 #include "pmap/common/error.h"
@@ -15,6 +16,23 @@ namespace {
 // How far a clipped reference edge may lie from a shared edge and still be
 // closed to it (the refinement's default seam_distance_m).
 constexpr double kSeamReachM = 0.3;
+
+// The spread of the planes of `matching` (map surface indices) along the
+// reference's normal, at the clipped reference's centre.
+double matchingSpread(const ReferenceSurface& ref, const std::vector<MapSurface>& surfaces,
+                      const std::vector<std::size_t>& matching) {
+  const Eigen::Vector3d c = rectangleCentre(ref.clipped);
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -lo;
+  for (const std::size_t j : matching) {
+    const MapSurface& m = surfaces[j];
+    const double side = m.normal.dot(ref.rect.normal) < 0.0 ? -1.0 : 1.0;
+    const double d = side * (m.normal.dot(c) - m.offset_m);  // along the reference's normal
+    lo = std::min(lo, d);
+    hi = std::max(hi, d);
+  }
+  return matching.size() > 1 ? hi - lo : 0.0;
+}
 
 SurfaceScore scoreSurface(const ReferenceSurface& ref, const MapSurface& map,
                           const MapSurfaceMatch& match, std::size_t matching,
@@ -109,9 +127,10 @@ SurfaceEvaluation evaluateSurfaces(const GroundTruth& gt, const MapPoints& point
     }
     const std::size_t primary = it->second.front();
     primaries.emplace_back(ref.rect.id, moved[primary]);
-    addScore(scoreSurface(ref, moved[primary], matches.map_surfaces[primary], it->second.size(),
-                          closing),
-             e);
+    SurfaceScore score = scoreSurface(ref, moved[primary], matches.map_surfaces[primary],
+                                      it->second.size(), closing);
+    score.matching_spread_m = matchingSpread(ref, moved, it->second);
+    addScore(score, e);
   }
   e.seams = seamSides(gt, primaries);
   for (const SeamSide& side : e.seams) {

@@ -26,7 +26,8 @@ json perSurfaceJson(const std::vector<SurfaceScore>& scores) {
                     {"normal_error_deg", s.normal_error_deg},
                     {"offset_error_m", s.offset_error_m},
                     {"corner_error_m", s.corner_error_m},
-                    {"corner_error_closed_m", s.corner_error_closed_m}});
+                    {"corner_error_closed_m", s.corner_error_closed_m},
+                    {"matching_spread_m", s.matching_spread_m}});
   }
   return list;
 }

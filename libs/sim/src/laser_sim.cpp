@@ -1,5 +1,6 @@
 #include "pmap/sim/laser_sim.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pmap::sim {
@@ -25,8 +26,40 @@ Eigen::Vector3d beamDirectionInWorld(const Pose2D& robot, const LaserOptions& la
   return d;
 }
 
+namespace {
+
+// The range noise's standard deviation for a hit at range t, met at
+// incidence cosine c (0: unknown).
+double rangeSigma(const NoiseOptions& noise, double t, double c) {
+  const LaserErrorOptions& l = noise.laser;
+  double sigma = noise.range_sigma_m + l.sigma_per_m * t;
+  if (c > 0.0 && l.incidence_factor > 0.0) {
+    sigma *= 1.0 + l.incidence_factor * (1.0 / std::max(c, 0.1) - 1.0);
+  }
+  return sigma;
+}
+
+// Whether beam i's neighbour lies across a depth edge, and its true range:
+// it hits another object (or nothing; in voxel worlds, whose hits have no
+// ids, any neighbour) more than jump_m nearer or further. Along one surface
+// met at a grazing angle neighbouring ranges also jump, but there the spot
+// stays on that surface: the incidence noise's business.
+std::optional<double> acrossEdge(const SimulatedScan& scan, std::size_t i, double jump_m) {
+  const std::vector<double>& t = scan.true_ranges_m;
+  const std::vector<int>& id = scan.hit_ids;
+  for (const std::size_t j : {i - 1, i + 1}) {
+    if (j < t.size() && std::abs(t[j] - t[i]) > jump_m && (id[j] != id[i] || id[i] < 0)) {
+      return t[j];
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 SimulatedScan simulateScan(const BeamCaster& cast, const Pose2D& robot, const LaserOptions& laser,
-                           double sigma_m, Rng& rng) {
+                           const NoiseOptions& noise, Rng& rng) {
+  const LaserErrorOptions& l = noise.laser;
   const RigidTransform sensor = laserToWorld(robot, laser);
   const Eigen::Vector3d origin = sensor.translation;
   const std::size_t n = static_cast<std::size_t>(laser.beams);
@@ -35,15 +68,41 @@ SimulatedScan simulateScan(const BeamCaster& cast, const Pose2D& robot, const La
   scan.valid.resize(n);
   scan.hit_ids.resize(n);
   scan.true_ranges_m.resize(n);
+  std::vector<char> has_hit(n, 0);
+  std::vector<double> cosines(n, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
     const double a = beamAngle(laser, static_cast<int>(i));
     const Eigen::Vector3d dir = sensor.rotation * Eigen::Vector3d(std::cos(a), std::sin(a), 0.0);
     const std::optional<BeamHit> hit = cast(origin, dir, laser.max_range_m);
-    const double noise = sigma_m * rng.normal();
     scan.hit_ids[i] = hit ? hit->id : -1;
     scan.true_ranges_m[i] = hit ? hit->t_m : laser.max_range_m;
-    const double noisy = hit ? hit->t_m + noise : laser.max_range_m;
-    const bool ok = hit && noisy > 0.0 && noisy <= laser.max_range_m;
+    has_hit[i] = hit ? 1 : 0;
+    cosines[i] = hit ? std::abs(dir.dot(hit->normal)) : 0.0;
+  }
+  const SimulatedScan true_hits = scan;  // before any beam is marked mixed or spurious
+  const double grazing_cos = std::cos(l.grazing_dropout_deg * M_PI / 180.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = scan.true_ranges_m[i];
+    const bool hit = has_hit[i] != 0;
+    const double c = cosines[i];
+    const double z = rng.normal();  // drawn hit or not: the stream stays the same
+    double noisy = hit ? t + rangeSigma(noise, t, c) * z : laser.max_range_m;
+    bool ok = hit && !(c > 0.0 && l.grazing_dropout_deg < 90.0 && c < grazing_cos);
+    if (l.dropout_probability > 0.0 && rng.uniform() < l.dropout_probability) {
+      ok = false;
+    }
+    if (l.spurious_probability > 0.0 && rng.uniform() < l.spurious_probability) {
+      noisy = rng.uniform(0.1, std::min(t, laser.max_range_m));
+      ok = true;
+      scan.hit_ids[i] = -1;
+    } else if (ok && l.mixed_pixel_probability > 0.0) {
+      const std::optional<double> other = acrossEdge(true_hits, i, l.mixed_pixel_jump_m);
+      if (other && rng.uniform() < l.mixed_pixel_probability) {
+        noisy = t + rng.uniform() * (*other - t);
+        scan.hit_ids[i] = -1;
+      }
+    }
+    ok = ok && noisy > 0.0 && noisy <= laser.max_range_m;
     scan.valid[i] = ok ? 1 : 0;
     scan.ranges_m[i] = static_cast<float>(ok ? noisy : laser.max_range_m);
   }
@@ -51,7 +110,7 @@ SimulatedScan simulateScan(const BeamCaster& cast, const Pose2D& robot, const La
 }
 
 SimulatedScan simulateScan(const RayCaster& caster, const Pose2D& robot, const LaserOptions& laser,
-                           double sigma_m, Rng& rng) {
+                           const NoiseOptions& noise, Rng& rng) {
   const RigidTransform sensor = laserToWorld(robot, laser);
   // Every beam lies in the sensor's x-y plane: only objects meeting it matter.
   const std::vector<int> candidates =
@@ -59,9 +118,9 @@ SimulatedScan simulateScan(const RayCaster& caster, const Pose2D& robot, const L
   const BeamCaster cast = [&](const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
                               double max_range_m) -> std::optional<BeamHit> {
     const auto hit = caster.cast(origin, dir, max_range_m, &candidates);
-    return hit ? std::optional<BeamHit>(BeamHit{hit->t, hit->id}) : std::nullopt;
+    return hit ? std::optional<BeamHit>(BeamHit{hit->t, hit->id, hit->normal}) : std::nullopt;
   };
-  return simulateScan(cast, robot, laser, sigma_m, rng);
+  return simulateScan(cast, robot, laser, noise, rng);
 }
 
 }  // namespace pmap::sim

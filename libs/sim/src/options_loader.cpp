@@ -127,6 +127,17 @@ NoiseOptions readNoise(JsonReader r) {
   n.odometry_sigma_xy_m = r.number("odometry_sigma_xy_m", n.odometry_sigma_xy_m, closed(0.0, 1.0));
   n.odometry_sigma_yaw_deg =
       r.number("odometry_sigma_yaw_deg", n.odometry_sigma_yaw_deg, closed(0.0, 45.0));
+  LaserErrorOptions& l = n.laser;
+  l.sigma_per_m = r.number("range_sigma_per_m", l.sigma_per_m, closed(0.0, 0.1));
+  l.incidence_factor = r.number("incidence_noise_factor", l.incidence_factor, closed(0.0, 10.0));
+  l.grazing_dropout_deg =
+      r.number("grazing_dropout_deg", l.grazing_dropout_deg, closed(0.001, 90.0));
+  l.dropout_probability = r.number("dropout_probability", l.dropout_probability, closed(0.0, 1.0));
+  l.spurious_probability =
+      r.number("spurious_probability", l.spurious_probability, closed(0.0, 1.0));
+  l.mixed_pixel_probability =
+      r.number("mixed_pixel_probability", l.mixed_pixel_probability, closed(0.0, 1.0));
+  l.mixed_pixel_jump_m = r.number("mixed_pixel_jump_m", l.mixed_pixel_jump_m, closed(0.001, 100.0));
   if (r.has("image_sigma")) {
     r.fail("image_sigma",
            "moved: image noise is sensors.cameras.noise (read_sigma_dn, full_well_e)");

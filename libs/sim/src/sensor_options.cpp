@@ -118,9 +118,35 @@ bool SensorOptions::validate(std::string* why) const {
   return true;
 }
 
+bool LaserErrorOptions::validate(std::string* why) const {
+  if (!(sigma_per_m >= 0.0 && sigma_per_m <= 0.1)) {
+    return fail(why, "range_sigma_per_m must be in [0, 0.1]");
+  }
+  if (!(incidence_factor >= 0.0 && incidence_factor <= 10.0)) {
+    return fail(why, "incidence_noise_factor must be in [0, 10]");
+  }
+  if (!(grazing_dropout_deg > 0.0 && grazing_dropout_deg <= 90.0)) {
+    return fail(why, "grazing_dropout_deg must be in (0, 90]");
+  }
+  for (const double p : {dropout_probability, spurious_probability, mixed_pixel_probability}) {
+    if (!(p >= 0.0 && p <= 1.0)) {
+      return fail(why,
+                  "dropout_probability, spurious_probability and mixed_pixel_probability must be "
+                  "in [0, 1]");
+    }
+  }
+  if (!(mixed_pixel_jump_m > 0.0 && mixed_pixel_jump_m <= 100.0)) {
+    return fail(why, "mixed_pixel_jump_m must be in (0, 100]");
+  }
+  return true;
+}
+
 bool NoiseOptions::validate(std::string* why) const {
   if (!(range_sigma_m >= 0.0 && range_sigma_m <= 1.0)) {
     return fail(why, "range_sigma_m must be in [0, 1]");
+  }
+  if (!laser.validate(why)) {
+    return false;
   }
   if (!(std::abs(odometry_scale_error) <= 0.5)) {
     return fail(why, "odometry_scale_error must be in [-0.5, 0.5]");

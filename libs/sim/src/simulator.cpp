@@ -24,7 +24,7 @@ namespace {
 
 /// One scan of a laser from a robot pose, by the world's own ray casting.
 using Scanner =
-    std::function<SimulatedScan(const Pose2D&, const LaserOptions&, double sigma_m, Rng&)>;
+    std::function<SimulatedScan(const Pose2D&, const LaserOptions&, const NoiseOptions&, Rng&)>;
 
 /// Simulates the cycles of one run and feeds the rawlog and the ground truth.
 /// Without `beam_ids` (voxel worlds) the structure scans carry no hit ids.
@@ -64,7 +64,7 @@ CycleRunner::Timed CycleRunner::scan(const LaserOptions& laser, std::size_t k, d
                                      GroundTruthRecorder* gt) {
   const double sigma = world_.noise.range_sigma_m;
   Rng rng(deriveSeed(options_.seed, "laser:" + laser.label, k));
-  const SimulatedScan s = scanner_(trajectory_.poseAtTime(t_rel), laser, sigma, rng);
+  const SimulatedScan s = scanner_(trajectory_.poseAtTime(t_rel), laser, world_.noise, rng);
   const auto stamp = simTimestamp(world_.sensors.start_time_s, t_rel);
   if (gt != nullptr) {
     gt->addStructureScan(mrpt::Clock::toDouble(stamp), laser.label,
@@ -126,14 +126,12 @@ Scanner makeScanner(const RayCaster* rectangles, const VoxelRayCaster* voxel_cas
       const std::optional<VoxelHit> hit = voxels.cast(origin, dir, max_range_m);
       return hit ? std::optional<BeamHit>(BeamHit{hit->t, -1}) : std::nullopt;
     };
-    return [cast](const Pose2D& robot, const LaserOptions& laser, double sigma_m, Rng& rng) {
-      return simulateScan(cast, robot, laser, sigma_m, rng);
-    };
+    return [cast](const Pose2D& robot, const LaserOptions& laser, const NoiseOptions& noise,
+                  Rng& rng) { return simulateScan(cast, robot, laser, noise, rng); };
   }
   const RayCaster& caster = *rectangles;
-  return [&caster](const Pose2D& robot, const LaserOptions& laser, double sigma_m, Rng& rng) {
-    return simulateScan(caster, robot, laser, sigma_m, rng);
-  };
+  return [&caster](const Pose2D& robot, const LaserOptions& laser, const NoiseOptions& noise,
+                   Rng& rng) { return simulateScan(caster, robot, laser, noise, rng); };
 }
 
 GroundTruthMeta makeMeta(const World& world, const SimulatorOptions& options,

@@ -37,7 +37,9 @@ const std::vector<std::string>& freeRectangleKinds() {
 }
 
 const std::vector<std::string>& clutterKinds() {
-  static const std::vector<std::string> kinds = {"bin", "column", "pillar"};
+  static const std::vector<std::string> kinds = {"bin",     "column", "pillar", "radiator",
+                                                 "cabinet", "shelf",  "desk",   "lamp",
+                                                 "duct",    "beam",   "pipe"};
   return kinds;
 }
 

@@ -49,6 +49,10 @@ struct SurfaceScore {
   double offset_error_m = 0;              ///< clipped reference centre to the map plane
   double corner_error_m = 0;              ///< cornerError(map rectangle, clipped reference)
   double corner_error_closed_m = 0;       ///< ... reference closed to its seams (seam_gaps.h)
+  /// How far apart the planes of the map surfaces matching it lie, at the
+  /// clipped reference's centre (m; 0 with one): a wall mapped twice as two
+  /// parallel surfaces shows their distance here.
+  double matching_spread_m = 0;
 };
 
 struct UnmatchedSurface {

@@ -60,9 +60,39 @@ struct SensorOptions {
   bool validate(std::string* why) const;
 };
 
+/// What real lasers do beyond a constant Gaussian range noise (laser_sim.h),
+/// both lasers. All off by default: the worlds of doc/RESULTS.md are drawn as
+/// before, to the bit.
+struct LaserErrorOptions {
+  /// The range noise's standard deviation grows by this per metre of range
+  /// (m/m): sigma(r) = range_sigma_m + sigma_per_m r.
+  double sigma_per_m = 0.0;
+  /// ... and with the angle of incidence a between the beam and the
+  /// surface's normal: times 1 + incidence_factor (1 / cos a - 1), cos a
+  /// floored at 0.1 (a spot stretched along a slanted surface).
+  double incidence_factor = 0.0;
+  /// Beams meeting a surface more than this far from its normal (deg)
+  /// return nothing; 90: never.
+  double grazing_dropout_deg = 90.0;
+  /// Each return is lost with this probability (dark or absorbing
+  /// surfaces), [0, 1].
+  double dropout_probability = 0.0;
+  /// Each beam returns, with this probability, a range drawn uniformly
+  /// short of its hit (dust, a passer-by's leg, a reflection), [0, 1].
+  double spurious_probability = 0.0;
+  /// A beam whose neighbour hits another object (or nothing) more than
+  /// mixed_pixel_jump_m nearer or further (a depth edge) returns, with this
+  /// probability, a range between the two (a spot split between both
+  /// surfaces), [0, 1].
+  double mixed_pixel_probability = 0.0;
+  double mixed_pixel_jump_m = 0.3;
+  bool validate(std::string* why) const;
+};
+
 /// Noise of the lasers and the odometry (image noise: CameraOptions::noise).
 struct NoiseOptions {
   double range_sigma_m = 0.02;                    ///< Gaussian range noise, both lasers, metres
+  LaserErrorOptions laser;                        ///< beyond the Gaussian (off by default)
   double odometry_scale_error = 0.02;             ///< systematic distance scale error (fraction)
   double odometry_heading_drift_deg_per_m = 1.0;  ///< systematic heading drift, degrees per metre
   bool odometry_random_signs = true;              ///< signs of the two drifts drawn from the seed

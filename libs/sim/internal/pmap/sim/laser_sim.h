@@ -40,20 +40,27 @@ Eigen::Vector3d beamDirectionInWorld(const Pose2D& robot, const LaserOptions& la
 struct BeamHit {
   double t_m = 0.0;
   int id = -1;
+  /// The surface's unit normal at the hit; zero where unknown (voxels): no
+  /// incidence effects there.
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
 };
 /// Casts one beam from `origin` along the unit `dir`; nullopt without a hit
 /// within `max_range_m`.
 using BeamCaster = std::function<std::optional<BeamHit>(
     const Eigen::Vector3d& origin, const Eigen::Vector3d& dir, double max_range_m)>;
 
-/// Casts every beam from the sensor origin; adds N(0, sigma_m^2) noise drawn from
-/// `rng` (one draw per beam, hit or not). A noisy range beyond max range (or not
-/// positive) becomes invalid with range = max range.
+/// Casts every beam from the sensor origin and draws its range error from
+/// `rng`: N(0, sigma^2) with sigma = noise.range_sigma_m, one draw per beam,
+/// hit or not; with noise.laser's effects on, sigma follows the range and
+/// the incidence, and returns are lost, spurious or mixed at depth edges
+/// (extra draws only for the effects that are on). A noisy range beyond max
+/// range (or not positive) becomes invalid with range = max range. A
+/// spurious or mixed return lies on no object: its hit id is -1.
 SimulatedScan simulateScan(const BeamCaster& cast, const Pose2D& robot, const LaserOptions& laser,
-                           double sigma_m, Rng& rng);
+                           const NoiseOptions& noise, Rng& rng);
 /// The same against a World's surfaces and clutter (only the objects whose
 /// bounding sphere meets the scan plane are tried).
 SimulatedScan simulateScan(const RayCaster& caster, const Pose2D& robot, const LaserOptions& laser,
-                           double sigma_m, Rng& rng);
+                           const NoiseOptions& noise, Rng& rng);
 
 }  // namespace pmap::sim
