@@ -205,12 +205,15 @@ pose-laser scan (ms; summary.json \`pose_per_scan_ms\`), \`--poses-only\`,
 \`config/default.ini\` with \`[Poses] loop_closure\` false / true, the two
 alternating on the same shared machine. "on" includes everything the pose
 graph adds to the front end's thread (the keyframe and scan refinements,
-applying a search's result, the graph solves, waiting for a search that is
-not done). Two ways of feeding the log:
+applying a job's result: the nodes a kept loop moved, the trajectory's
+rewrite and the front end map's rebuild; waiting for a job that is not
+done). A job, on the worker thread, is one keyframe's loop search and, when
+it finds a loop, the graph solve that tests it (on the front end's thread
+until 4bc521a). Two ways of feeding the log:
 
 - as fast as the machine goes (the median of 5 runs each): the loop searches
   run on one worker thread and each is applied one keyframe after its own
-  (\`loop_search_latency_keyframes\` 1); when the searches take more CPU than
+  (\`loop_search_latency_keyframes\` 1); when the jobs take more CPU than
   the front end leaves between keyframes, the front end waits for them
   ("wait": seconds in all, in the last run);
 - at 10 times the log's pace (\`--playback-rate 10\`, the median of 3 runs
