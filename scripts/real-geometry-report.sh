@@ -86,20 +86,7 @@ PY
 # ICP poses, the shipped configs (default.ini, sigma5.ini), online.
 : > "$work/cluttered.txt"
 for s in 0.02 0.05; do
-  "$bin/indoor-sim" --world config/worlds/cluttered.json --seed 1 --sigma "$s" --no-cameras --quiet \
-    --out "$work/cl-$s" 2>/dev/null
-  ini=config/default.ini
-  [ "$s" = 0.05 ] && ini=config/sigma5.ini
-  for poses in true icp; do
-    extra=()
-    [ "$poses" = true ] && extra=(--poses "$work/cl-$s.poses.txt")
-    out="$work/clmap-$s-$poses"
-    "$bin/planar-mapper" --rawlog "$work/cl-$s.rawlog" "${extra[@]}" --config "$ini" --out "$out" -q \
-      --no-textures 2>/dev/null
-    "$bin/map-eval" --map "$out" --gt "$work/cl-$s.gt.json" --out "$out/eval.json" -q 2>/dev/null
-    echo "$s $poses $out" >> "$work/cluttered.txt"
-    echo "real-geometry: cluttered world sigma $s, $poses poses" >&2
-  done
+  sim_cases "$bin" cluttered "$s" "$work/cluttered.txt" --no-textures
 done
 cluttered_table=$(python3 - "$work/cluttered.txt" <<'PY'
 import json, os, sys
@@ -108,7 +95,7 @@ print("| σ (cm) | poses | explained | ratio counting polygons | surfaces | fine
       "| EM p99 per scan (ms) | last tenth ÷ second (EM median) | pose ATE (m) |")
 print("|" + "---|" * 12)
 for line in open(sys.argv[1]):
-    s, poses, d = line.split()
+    _, s, poses, _, d = line.split()
     sm = json.load(open(os.path.join(d, "summary.json")))
     e = json.load(open(os.path.join(d, "eval.json")))
     sigma = float(s)

@@ -20,20 +20,7 @@ runs="$work/runs.txt"
 : > "$runs"
 for w in "${worlds[@]}"; do
   for s in "${sigmas[@]}"; do
-    sim="$work/$w-$s"
-    "$bin/indoor-sim" --world "config/worlds/$w.json" --seed 1 --sigma "$s" --no-cameras --quiet \
-      --out "$sim" 2>/dev/null
-    ini=config/default.ini
-    [ "$s" = 0.05 ] && ini=config/sigma5.ini
-    for poses in true icp; do
-      extra=()
-      [ "$poses" = true ] && extra=(--poses "$sim.poses.txt")
-      out="$work/map-$w-$s-$poses"
-      "$bin/planar-mapper" --rawlog "$sim.rawlog" "${extra[@]}" --config "$ini" --out "$out" -q
-      "$bin/map-eval" --map "$out" --gt "$sim.gt.json" --out "$out/eval.json" -q
-      echo "$w $s $poses $ini $out" >> "$runs"
-      echo "results-report: $w sigma $s $poses poses done" >&2
-    done
+    sim_cases "$bin" "$w" "$s" "$runs"
   done
 done
 

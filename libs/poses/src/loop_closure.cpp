@@ -384,7 +384,7 @@ std::function<LoopOutcome()> LoopClosingBackEnd::prepareJob() {
       keepLoop(*graph, l.edge, l.nodes);
     }
     out.test = testLoop(std::move(*graph), out.search.edge);
-    if (out.test->innovation <= options.max_chi2) {
+    if (out.test->keeps(options.max_chi2)) {
       loops.push_back({job, out.search.edge, out.test->nodes});
     }
     return out;
@@ -436,7 +436,7 @@ bool LoopClosingBackEnd::apply(const LoopOutcome& outcome) {
     verifyWorkerTest(graph_, r.edge, test);
   }
   stats_.solve_s += test.solve_s;
-  if (!(test.innovation <= options_.max_chi2)) {
+  if (!test.keeps(options_.max_chi2)) {
     ++stats_.rejected_chi2;
     return false;
   }

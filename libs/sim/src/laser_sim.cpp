@@ -79,7 +79,9 @@ SimulatedScan simulateScan(const BeamCaster& cast, const Pose2D& robot, const La
     has_hit[i] = hit ? 1 : 0;
     cosines[i] = hit ? std::abs(dir.dot(hit->normal)) : 0.0;
   }
-  const SimulatedScan true_hits = scan;  // before any beam is marked mixed or spurious
+  // Spurious and mixed returns are marked after the loop: the depth edges
+  // are found on the true hits.
+  std::vector<char> on_no_object(n, 0);
   const double grazing_cos = std::cos(l.grazing_dropout_deg * M_PI / 180.0);
   for (std::size_t i = 0; i < n; ++i) {
     const double t = scan.true_ranges_m[i];
@@ -94,17 +96,20 @@ SimulatedScan simulateScan(const BeamCaster& cast, const Pose2D& robot, const La
     if (l.spurious_probability > 0.0 && rng.uniform() < l.spurious_probability) {
       noisy = rng.uniform(0.1, std::min(t, laser.max_range_m));
       ok = true;
-      scan.hit_ids[i] = -1;
+      on_no_object[i] = 1;
     } else if (ok && l.mixed_pixel_probability > 0.0) {
-      const std::optional<double> other = acrossEdge(true_hits, i, l.mixed_pixel_jump_m);
+      const std::optional<double> other = acrossEdge(scan, i, l.mixed_pixel_jump_m);
       if (other && rng.uniform() < l.mixed_pixel_probability) {
         noisy = t + rng.uniform() * (*other - t);
-        scan.hit_ids[i] = -1;
+        on_no_object[i] = 1;
       }
     }
     ok = ok && noisy > 0.0 && noisy <= laser.max_range_m;
     scan.valid[i] = ok ? 1 : 0;
     scan.ranges_m[i] = static_cast<float>(ok ? noisy : laser.max_range_m);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    scan.hit_ids[i] = on_no_object[i] ? -1 : scan.hit_ids[i];
   }
   return scan;
 }

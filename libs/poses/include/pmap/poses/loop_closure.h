@@ -95,6 +95,8 @@ struct LoopTest {
   double innovation = 0;     ///< 2 (F_after - F_before)
   std::vector<Pose2> nodes;  ///< the copy's nodes after the solve
   double solve_s = 0;        ///< the solve's wall time
+  /// Whether the loop is kept: its innovation at most max_chi2 (NaN: no).
+  bool keeps(double max_chi2) const { return innovation <= max_chi2; }
 };
 
 /// `graph` solved with `edge` added (not under the robust loss).
