@@ -97,6 +97,7 @@ void PosesSection::load(config::SectionReader& r) {
   r.read("loop_max_chi2", l.max_chi2);
   r.read("loop_sigma_m", l.loop_sigma_m);
   r.read("loop_sigma_deg", l.loop_sigma_deg);
+  r.read("loop_refinement", l.refine_loops);
   r.read("odometry_sigma_fraction", l.odometry_sigma_fraction);
   r.read("odometry_sigma_deg", l.odometry_sigma_deg);
   r.read("loop_loss_scale", l.loop_loss_scale);

@@ -264,6 +264,7 @@ json summaryJson(const MapperArgs& args, const MappingResult& r, const StageCloc
     s["poses"]["loop_closure"] = {{"keyframes", l.keyframes},
                                   {"refined_edges", l.refined_edges},
                                   {"refined_scans", l.refined_scans},
+                                  {"odometry_keyframes", l.odometry_keyframes},
                                   {"candidates", l.candidates},
                                   {"rejected_by_score", l.rejected_match},
                                   {"rejected_as_ambiguous", l.rejected_ambiguous},

@@ -1,10 +1,14 @@
 #include "pmap/poses/loop_search.h"
 
 #include <mrpt/core/bits_math.h>
+#include <Eigen/LU>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+
+#include "pmap/poses/odometry_model.h"
+#include "pmap/poses/scan_refiner.h"
 
 namespace pmap::poses {
 namespace {
@@ -90,11 +94,44 @@ Verdict tryCandidate(const LoopCandidate& candidate, const std::vector<Eigen::Ve
 
 }  // namespace
 
+PoseEdge loopEdge(const LoopCandidate& candidate, const std::vector<Eigen::Vector2d>& query,
+                  const Pose2& match, const LoopClosureOptions& options) {
+  PoseEdge edge;
+  edge.from = candidate.older;
+  edge.loop = true;
+  edge.measurement = match;
+  const double st = options.loop_sigma_m, sr = mrpt::DEG2RAD(options.loop_sigma_deg);
+  const Eigen::Matrix3d match_information =
+      Eigen::Vector3d(1 / (st * st), 1 / (st * st), 1 / (sr * sr)).asDiagonal();
+  edge.information = match_information;
+  if (!options.refine_loops) {
+    return edge;
+  }
+  // A flat prior (sigma 32 m, 160 deg) only so that the solve and the
+  // inverse below exist where the points say nothing.
+  const Eigen::Matrix3d flat =
+      Eigen::Vector3d(1e-3, 1e-3, 1e-3 / std::pow(mrpt::DEG2RAD(5.0), 2)).asDiagonal();
+  const RefinedPose r =
+      refinePose(LineMap(candidate.submap, options.refine), query, match, flat, options.refine);
+  if (!r.refined) {
+    return edge;
+  }
+  // The points' own estimate, off the correlative lattice where the walls
+  // constrain it, the match's pose where they do not (odometry_model.h).
+  edge.measurement = dataEstimate(r.pose, r.data_information, match, flat);
+  //   Sigma_loop = Sigma_match + (s H_points + L_flat)^-1
+  const Eigen::Matrix3d points = options.refine.information_scale * r.data_information + flat;
+  const Eigen::Matrix3d information = (match_information.inverse() + points.inverse()).inverse();
+  edge.information = 0.5 * (information + information.transpose());
+  return edge;
+}
+
 LoopSearchResult runLoopSearch(const LoopSearch& search, const LoopClosureOptions& options,
                                const ScanMatchOptions& match_options) {
   const auto t0 = std::chrono::steady_clock::now();
   LoopSearchResult r;
   const std::vector<Eigen::Vector2d> query = allEnds(search.query);  // the same for every candidate
+  const LoopCandidate* best = nullptr;
   for (const LoopCandidate& c : search.candidates) {
     ++r.candidates;
     ScanMatch match;
@@ -108,15 +145,12 @@ LoopSearchResult runLoopSearch(const LoopSearch& search, const LoopClosureOption
     if (match.score > r.match.score) {  // the best verified candidate
       r.found = true;
       r.match = match;
-      r.edge.from = c.older;
+      best = &c;
     }
   }
   if (r.found) {
+    r.edge = loopEdge(*best, query, r.match.pose, options);
     r.edge.to = search.newest;
-    r.edge.measurement = r.match.pose;
-    const double st = options.loop_sigma_m, sr = mrpt::DEG2RAD(options.loop_sigma_deg);
-    r.edge.information = Eigen::Vector3d(1 / (st * st), 1 / (st * st), 1 / (sr * sr)).asDiagonal();
-    r.edge.loop = true;
   }
   r.search_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;

@@ -74,6 +74,7 @@ struct LoopClosure {
 
 struct LoopClosureStats {
   std::size_t keyframes = 0;
+  std::size_t odometry_keyframes = 0;   ///< made on the wheels' distance (front end stalled)
   std::size_t refined_edges = 0;        ///< keyframe edges refined point-to-line
   std::size_t refined_scans = 0;        ///< scans between keyframes refined the same way
   std::size_t candidates = 0;           ///< verified by a scan-to-submap match
@@ -168,7 +169,7 @@ class LoopClosingBackEnd {
   const LoopClosureOptions& options() const { return options_; }
 
  private:
-  bool isKeyframe(const Pose2& front) const;
+  bool isKeyframe(const Pose2& front, const std::optional<OdometrySample>& odometry);
   void addKeyframe(double t, const Pose2& front, std::vector<Eigen::Vector2d> points,
                    const std::optional<OdometrySample>& odometry);
   Eigen::Matrix3d odometryInformation(const Pose2& from, const Pose2& to) const;

@@ -50,6 +50,10 @@ struct LoopClosureOptions {
   double max_chi2 = 11.34;
   double loop_sigma_m = 0.05;   ///< a loop edge's standard deviation (m)
   double loop_sigma_deg = 1.0;  ///< ... and in heading (deg)
+  /// A verified match refined point-to-line on the candidate's submap: the
+  /// loop edge is the points' estimate, and its information adds to the
+  /// sigmas above what the points leave open (loop_search.h, loopEdge).
+  bool refine_loops = true;
   /// The front end's relative pose as an edge's prior (without calibrated
   /// odometry): translation sigma per metre moved, heading sigma plus 5 %
   /// of the turn.

@@ -41,10 +41,23 @@ struct LoopSearchResult {
   std::size_t rejected_ambiguous = 0;   ///< another pose scored nearly as well / window edge
   std::size_t rejected_free_space = 0;  ///< the best pose contradicts the beams' free space
   bool found = false;                   ///< a verified match: edge and match are set
-  PoseEdge edge;                        ///< older -> newest, loop_sigma_m / loop_sigma_deg
+  PoseEdge edge;                        ///< older -> newest (loopEdge)
   ScanMatch match;
   double search_s = 0;  ///< wall time of the search
 };
+
+/// The loop edge older -> (to be set) of a verified correlative match of
+/// `query` (the newest keyframe's points, its frame) at `match` in
+/// `candidate`'s frame (doc/poses.md, "Loop edges"). With refine_loops the
+/// match is refined point-to-line on the candidate's submap (scan_refiner.h)
+/// and the edge is the points' own estimate, with the information
+///   (Sigma_match + (information_scale H_points + L_flat)^-1)^-1,
+/// Sigma_match = diag(loop_sigma_m^2, loop_sigma_m^2, loop_sigma_deg^2): the
+/// match's own error (its 5 cm lattice, any scene) plus what the points
+/// leave open (a corridor's axis). Without it (or too few matched points):
+/// the match, with the information Sigma_match^-1.
+PoseEdge loopEdge(const LoopCandidate& candidate, const std::vector<Eigen::Vector2d>& query,
+                  const Pose2& match, const LoopClosureOptions& options);
 
 LoopSearchResult runLoopSearch(const LoopSearch& search, const LoopClosureOptions& options,
                                const ScanMatchOptions& match_options);
