@@ -105,7 +105,7 @@ TEST(LoopEdge, ACorridorsAxisGetsNoInformation) {
   const Loop l = makeLoop(corridor(), {0.0, 0.0, 0.0}, {0.7, 0.15, 0.05});
   const Pose2 match = compose(l.truth, {0.4, 0.02, 0.002});  // 40 cm off along the axis
   const PoseEdge edge = loopEdge(l.candidate, l.query, match, LoopClosureOptions{});
-  // Across and in heading: corrected. Along: where the match put it.
+  // Across and in heading: corrected.
   EXPECT_NEAR(edge.measurement.y, l.truth.y, 0.005);
   EXPECT_NEAR(wrapAngle(edge.measurement.theta - l.truth.theta), 0.0, 0.001);
   // Along: where the match put it (the far beams' noisy normals move it a

@@ -107,10 +107,10 @@ PoseEdge loopEdge(const LoopCandidate& candidate, const std::vector<Eigen::Vecto
   if (!options.refine_loops) {
     return edge;
   }
-  // A flat prior (sigma 32 m, 160 deg) only so that the solve and the
-  // inverse below exist where the points say nothing.
-  const Eigen::Matrix3d flat =
-      Eigen::Vector3d(1e-3, 1e-3, 1e-3 / std::pow(mrpt::DEG2RAD(5.0), 2)).asDiagonal();
+  // A thousandth of the flat prior (sigma 32 m, 160 deg), as the path
+  // constraints' floor: only so that the solve and the inverse below exist
+  // where the points say nothing.
+  const Eigen::Matrix3d flat = 1e-3 * flatPrior();
   const RefinedPose r =
       refinePose(LineMap(candidate.submap, options.refine), query, match, flat, options.refine);
   if (!r.refined) {

@@ -8,13 +8,6 @@
 namespace pmap::poses {
 namespace {
 
-// The flat prior of a match (1 m, 5 deg): enough to keep Gauss-Newton
-// well-posed along a corridor, taken out of the result again.
-Eigen::Matrix3d flatPrior() {
-  const double sigma_rad = 5.0 * M_PI / 180.0;
-  return Eigen::Vector3d(1.0, 1.0, 1.0 / (sigma_rad * sigma_rad)).asDiagonal();
-}
-
 // The information of a match with nothing left along the line between the
 // two keyframes when the points hardly see that direction: less than
 // min_along_ratio of the information across it (the degenerate direction

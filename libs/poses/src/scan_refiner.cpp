@@ -160,6 +160,11 @@ Linearised linearise(const LineMap& map, const std::vector<Eigen::Vector2d>& que
 
 }  // namespace
 
+Eigen::Matrix3d flatPrior() {
+  const double sigma_rad = 5.0 * M_PI / 180.0;
+  return Eigen::Vector3d(1.0, 1.0, 1.0 / (sigma_rad * sigma_rad)).asDiagonal();
+}
+
 RefinedPose refinePose(const LineMap& map, const std::vector<Eigen::Vector2d>& query,
                        const Pose2& guess, const Eigen::Matrix3d& prior,
                        const ScanRefineOptions& options) {

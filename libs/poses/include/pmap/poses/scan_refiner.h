@@ -91,6 +91,11 @@ struct RefinedPose {
   int iterations = 0;
 };
 
+/// The flat prior of a match (1 m, 5 deg): enough to keep Gauss-Newton
+/// well-posed along a corridor, taken out of the result again
+/// (dataEstimate, odometry_model.h).
+Eigen::Matrix3d flatPrior();
+
 /// The pose of the scan `query` (points in its own frame) in `map`'s frame,
 /// started from `guess`, held to `prior_mean` with information `prior`
 /// (symmetric positive definite). Deterministic.
