@@ -5,7 +5,8 @@ Usage: pose_errors.py TRUE_POSES.txt POSES.txt [SUMMARY.json]
 Prints one JSON object: ate_m (RMS position error after the best rigid 2D
 alignment, as map-eval's pose_ate_m), max_m; with SUMMARY.json and loop
 closure on, loops (accepted closures) and worst_loop_m (the largest distance
-between a closure's match and the same relative pose of the true trajectory).
+between a closure's match and the same relative pose of the true trajectory,
+without the component along the closure's free_axis, which it leaves open).
 Pure Python.
 """
 import bisect
@@ -72,7 +73,10 @@ def main():
             errors = []
             for c in loops["closures"]:
                 t = between(at(truth, times, c["older_t"]), at(truth, times, c["newer_t"]))
-                errors.append(math.hypot(t[0] - c["x_m"], t[1] - c["y_m"]))
+                ex, ey = t[0] - c["x_m"], t[1] - c["y_m"]
+                ax, ay = c.get("free_axis", (0.0, 0.0))
+                along = ex * ax + ey * ay  # a free axis's error does not count
+                errors.append(math.hypot(ex - along * ax, ey - along * ay))
             out["loops"] = len(errors)
             out["worst_loop_m"] = max(errors, default=0.0)
     print(json.dumps(out))

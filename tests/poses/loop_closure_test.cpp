@@ -215,6 +215,18 @@ TEST(LoopClosureOptions, SearchLatencyIsBounded) {
   EXPECT_FALSE(o.validate(&why));
 }
 
+TEST(LoopClosureOptions, AxisRatioIsAShare) {
+  std::string why;
+  LoopClosureOptions o;
+  for (const double bad : {-0.01, 1.01, std::nan("")}) {
+    o.min_axis_ratio = bad;
+    EXPECT_FALSE(o.validate(&why)) << bad;
+    EXPECT_NE(why.find("loop_min_axis_ratio"), std::string::npos) << why;
+  }
+  o.min_axis_ratio = 0.0;
+  EXPECT_TRUE(o.validate(&why)) << why;
+}
+
 // Loop closure off and keyframe refinement off: the back end hands on the
 // front end's poses unchanged.
 TEST(LoopClosure, DisabledChangesNothing) {

@@ -156,5 +156,52 @@ TEST(ScanMatcher, Item15_TheRunnerUpTellsAnAmbiguousPlaceFromAUniqueOne) {
   EXPECT_FALSE(room_matcher.anyOutside(room_query, around_room, near, 0.9 * room_best.score));
 }
 
+// A corridor is ambiguous along its axis only: with the line through the
+// best pose along the axis left out, nothing else scores nearly as well;
+// with a line across it, or with a twin corridor beside it, something does.
+TEST(ScanMatcher, Item15_AnAmbiguityAlongOneLineIsToldFromOthers) {
+  std::vector<Eigen::Vector2d> corridor;  // two 30 m walls 2 m apart
+  for (double t = 0; t < 30.0; t += 0.03) {
+    corridor.emplace_back(t, -1.0);
+    corridor.emplace_back(t, 1.0);
+  }
+  std::vector<Eigen::Vector2d> piece;  // 6 m of it, seen from (15, 0)
+  for (const auto& p : corridor) {
+    if (p.x() > 12.0 && p.x() < 18.0) {
+      piece.push_back(p);
+    }
+  }
+  const Pose2 truth{15.0, 0.0, 0.0};
+  MatchWindow window;
+  window.guess = {14.0, 0.2, 0.0};
+  window.linear_m = 3.0;
+  window.angular_deg = 10.0;
+  const ScanMatcher matcher(corridor, ScanMatchOptions{});
+  const auto query = seenFrom(piece, truth, 0.01, 2);
+  const ScanMatch best = matcher.match(query, window, 0.3);
+  ASSERT_TRUE(best.found);
+  MatchWindow near;
+  near.guess = best.pose;
+  near.linear_m = 1.0;
+  near.angular_deg = 5.0;
+  const double runner_up = 0.9 * best.score;
+  ASSERT_TRUE(matcher.anyOutside(query, window, near, runner_up));
+  EXPECT_FALSE(matcher.anyOutsideBand(query, window, near, {1.0, 0.0}, 0.1, runner_up));
+  EXPECT_FALSE(matcher.anyOutsideBand(query, window, near, {-1.0, 0.0}, 0.1, runner_up));
+  EXPECT_TRUE(matcher.anyOutsideBand(query, window, near, {0.0, 1.0}, 0.1, runner_up));
+
+  // A twin 2.5 m to the side: its axis is no way out.
+  std::vector<Eigen::Vector2d> twins = corridor;
+  for (const auto& p : corridor) {
+    twins.emplace_back(p.x(), p.y() + 2.5);
+  }
+  const ScanMatcher twin_matcher(twins, ScanMatchOptions{});
+  const ScanMatch twin_best = twin_matcher.match(query, window, 0.3);
+  ASSERT_TRUE(twin_best.found);
+  near.guess = twin_best.pose;
+  EXPECT_TRUE(
+      twin_matcher.anyOutsideBand(query, window, near, {1.0, 0.0}, 0.1, 0.9 * twin_best.score));
+}
+
 }  // namespace
 }  // namespace pmap::poses

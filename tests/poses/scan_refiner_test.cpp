@@ -202,5 +202,32 @@ TEST(ScanRefineOptions, ValidateRejectsNonsense) {
   EXPECT_FALSE(l.validate(&why));
 }
 
+// The weakest translation of an information matrix, and the matrix without
+// it: whatever the corridor's direction, the axis is found, nothing is left
+// along it and nothing changes across it or in heading.
+TEST(ScanRefiner, WeakestTranslationIsFoundAndDropped) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> angle(-M_PI, M_PI);
+  for (int trial = 0; trial < 50; ++trial) {
+    const double phi = angle(rng);
+    const Eigen::Vector3d axis(std::cos(phi), std::sin(phi), 0.0);
+    const Eigen::Vector3d across(-axis.y(), axis.x(), 0.0);
+    const Eigen::Vector3d heading = Eigen::Vector3d::UnitZ();
+    const Eigen::Matrix3d l = 2.0 * axis * axis.transpose() + 1e5 * across * across.transpose() +
+                              3e3 * heading * heading.transpose() +
+                              50.0 * (across * heading.transpose() + heading * across.transpose());
+    const WeakestTranslation w = weakestTranslation(l);
+    EXPECT_NEAR(std::abs(w.direction.dot(axis)), 1.0, 1e-9);
+    EXPECT_EQ(w.direction.z(), 0.0);
+    EXPECT_NEAR(w.ratio, 2e-5, 1e-9);
+    const Eigen::Matrix3d dropped = withoutDirection(l, w.direction);
+    EXPECT_NEAR((dropped * axis).norm(), 0.0, 1e-6);
+    EXPECT_NEAR(across.dot(dropped * across), 1e5, 1e-6);
+    EXPECT_NEAR(across.dot(dropped * heading), 50.0, 1e-6);
+    EXPECT_NEAR(heading.dot(dropped * heading), 3e3, 1e-9);
+  }
+  EXPECT_EQ(weakestTranslation(Eigen::Matrix3d::Zero()).ratio, 0.0);
+}
+
 }  // namespace
 }  // namespace pmap::poses

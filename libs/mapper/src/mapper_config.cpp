@@ -91,6 +91,7 @@ void PosesSection::load(config::SectionReader& r) {
   r.read("loop_min_score", l.min_score);
   r.read("loop_max_ambiguity", l.max_ambiguity);
   r.read("loop_ambiguity_distance_m", l.ambiguity_distance_m);
+  r.read("loop_accept_axis_ambiguity", l.accept_axis_ambiguity);
   r.read("loop_max_free_space_conflict", l.max_free_space_conflict);
   r.read("loop_free_space_margin_m", l.free_space_margin_m);
   r.read("loop_min_same_side_ratio", l.min_same_side_ratio);
@@ -98,6 +99,7 @@ void PosesSection::load(config::SectionReader& r) {
   r.read("loop_sigma_m", l.loop_sigma_m);
   r.read("loop_sigma_deg", l.loop_sigma_deg);
   r.read("loop_refinement", l.refine_loops);
+  r.read("loop_min_axis_ratio", l.min_axis_ratio);
   r.read("odometry_sigma_fraction", l.odometry_sigma_fraction);
   r.read("odometry_sigma_deg", l.odometry_sigma_deg);
   r.read("loop_loss_scale", l.loop_loss_scale);

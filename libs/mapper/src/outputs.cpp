@@ -115,7 +115,8 @@ json closuresSummary(const std::vector<poses::LoopClosure>& closures) {
                    {"theta_deg", c.measurement.theta * 180.0 / M_PI},
                    {"score", c.score},
                    {"moved_m", c.moved_m},
-                   {"solve_ms", c.solve_ms}});
+                   {"solve_ms", c.solve_ms},
+                   {"free_axis", {c.free_axis.x(), c.free_axis.y()}}});
   }
   return out;
 }
@@ -269,6 +270,7 @@ json summaryJson(const MapperArgs& args, const MappingResult& r, const StageCloc
                                   {"rejected_by_score", l.rejected_match},
                                   {"rejected_as_ambiguous", l.rejected_ambiguous},
                                   {"rejected_by_free_space", l.rejected_free_space},
+                                  {"verified_along_a_line_free", l.axis_only},
                                   {"rejected_by_chi2", l.rejected_chi2},
                                   {"accepted", l.accepted},
                                   {"path_constraints", l.path_constraints},

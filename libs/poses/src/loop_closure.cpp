@@ -62,10 +62,10 @@ bool LoopClosureOptions::validate(std::string* why) const {
   if (!(min_score >= 0.0 && min_score <= 1.0) ||
       !(max_free_space_conflict >= 0.0 && max_free_space_conflict <= 1.0) ||
       !(min_same_side_ratio >= 0.0 && min_same_side_ratio <= 1.0) ||
-      !(free_space_margin_m >= 0.0)) {
+      !(min_axis_ratio >= 0.0 && min_axis_ratio <= 1.0) || !(free_space_margin_m >= 0.0)) {
     *why =
-        "loop_min_score and loop_max_free_space_conflict must be in [0, 1], "
-        "loop_free_space_margin_m >= 0";
+        "loop_min_score, loop_max_free_space_conflict, loop_min_same_side_ratio and "
+        "loop_min_axis_ratio must be in [0, 1], loop_free_space_margin_m >= 0";
     return false;
   }
   if (candidates_per_keyframe < 1 || candidates_per_keyframe > 100) {
@@ -439,6 +439,7 @@ bool LoopClosingBackEnd::apply(const LoopOutcome& outcome) {
   stats_.rejected_match += r.rejected_match;
   stats_.rejected_ambiguous += r.rejected_ambiguous;
   stats_.rejected_free_space += r.rejected_free_space;
+  stats_.axis_only += r.axis_only;
   stats_.search_s += r.search_s;
   if (!r.found) {
     return false;
@@ -459,7 +460,8 @@ bool LoopClosingBackEnd::apply(const LoopOutcome& outcome) {
   const Pose2 before = graph_.node(k);
   keepLoop(graph_, r.edge, test.nodes);
   closures_.push_back({r.edge.from, k, keyframes_[r.edge.from].t, keyframes_[k].t, r.match.pose,
-                       r.match.score, distance(before, graph_.node(k)), 1000.0 * test.solve_s});
+                       r.match.score, distance(before, graph_.node(k)), 1000.0 * test.solve_s,
+                       r.free_axis});
   ++stats_.accepted;
   path_at_last_closure_ = path_m_;
   recent_map_.reset();

@@ -37,12 +37,37 @@ bool freeSpaceAgrees(const std::vector<Rays>& submap, const std::vector<Rays>& q
          same_side >= options.min_same_side_ratio * own;
 }
 
+Eigen::Vector3d asTranslation(const Eigen::Vector2d& axis) {
+  return {axis.x(), axis.y(), 0.0};
+}
+
+// The edge's measurement with the match's pose along `axis` (its
+// information there is the caller's).
+void freeAlong(const Eigen::Vector2d& axis, const Pose2& match, PoseEdge& edge) {
+  const double along =
+      axis.dot(Eigen::Vector2d(edge.measurement.x - match.x, edge.measurement.y - match.y));
+  edge.measurement.x -= along * axis.x();
+  edge.measurement.y -= along * axis.y();
+}
+
+// The translation the submap's lines constrain least at `match` (a
+// corridor's axis); zero when too few points match to tell.
+Eigen::Vector2d weakestAxis(const LoopCandidate& candidate,
+                            const std::vector<Eigen::Vector2d>& query, const Pose2& match,
+                            const LoopClosureOptions& options) {
+  const RefinedPose r = refinePose(LineMap(candidate.submap, options.refine), query, match,
+                                   1e-3 * flatPrior(), options.refine);
+  return r.refined ? Eigen::Vector2d(weakestTranslation(r.data_information).direction.head<2>())
+                   : Eigen::Vector2d::Zero();
+}
+
 // Coarse to fine (Olson 2009): the whole window on a coarse, blurred grid
 // (4x the cell and sigma, 80 % of the score), then a small window around its
 // best pose on the fine grid.
 Verdict tryCandidate(const LoopCandidate& candidate, const std::vector<Eigen::Vector2d>& query,
                      const LoopSearch& search, const LoopClosureOptions& options,
-                     const ScanMatchOptions& match_options, ScanMatch& match) {
+                     const ScanMatchOptions& match_options, ScanMatch& match,
+                     Eigen::Vector2d& free_axis) {
   const std::vector<Eigen::Vector2d> submap = allEnds(candidate.submap);
   ScanMatchOptions coarse = match_options;
   coarse.resolution_m = 4.0 * match_options.resolution_m;
@@ -78,13 +103,27 @@ Verdict tryCandidate(const LoopCandidate& candidate, const std::vector<Eigen::Ve
   }
   // A place that looks the same elsewhere in the search window (a corridor's
   // axis, a row of doors) gives no loop: the runner-up, at least
-  // ambiguity_distance_m or 5 deg from the best, must score clearly less.
+  // ambiguity_distance_m or 5 deg from the best, must score clearly less...
   MatchWindow near_best;
   near_best.guess = match.pose;
   near_best.linear_m = options.ambiguity_distance_m;
   near_best.angular_deg = 5.0;
-  if (fine.anyOutside(query, whole, near_best, options.max_ambiguity * match.score)) {
-    return Verdict::kAmbiguous;
+  const double runner_up = options.max_ambiguity * match.score;
+  free_axis = Eigen::Vector2d::Zero();
+  if (fine.anyOutside(query, whole, near_best, runner_up)) {
+    // ... unless every such pose lies on the line through the best along
+    // the translation the walls constrain least (its heading within 5 deg,
+    // two cells across): then the place is known across that line and in
+    // heading, and the edge leaves the line free.
+    if (!options.accept_axis_ambiguity) {
+      return Verdict::kAmbiguous;
+    }
+    const Eigen::Vector2d axis = weakestAxis(candidate, query, match.pose, options);
+    if (axis.isZero() || fine.anyOutsideBand(query, whole, near_best, axis,
+                                             2.0 * match_options.resolution_m, runner_up)) {
+      return Verdict::kAmbiguous;
+    }
+    free_axis = axis;
   }
   if (!freeSpaceAgrees(candidate.submap, search.query, match.pose, options, match_options)) {
     return Verdict::kFreeSpaceConflict;
@@ -95,7 +134,8 @@ Verdict tryCandidate(const LoopCandidate& candidate, const std::vector<Eigen::Ve
 }  // namespace
 
 PoseEdge loopEdge(const LoopCandidate& candidate, const std::vector<Eigen::Vector2d>& query,
-                  const Pose2& match, const LoopClosureOptions& options) {
+                  const Pose2& match, const LoopClosureOptions& options,
+                  const Eigen::Vector2d& free_axis) {
   PoseEdge edge;
   edge.from = candidate.older;
   edge.loop = true;
@@ -103,24 +143,45 @@ PoseEdge loopEdge(const LoopCandidate& candidate, const std::vector<Eigen::Vecto
   const double st = options.loop_sigma_m, sr = mrpt::DEG2RAD(options.loop_sigma_deg);
   const Eigen::Matrix3d match_information =
       Eigen::Vector3d(1 / (st * st), 1 / (st * st), 1 / (sr * sr)).asDiagonal();
-  edge.information = match_information;
-  if (!options.refine_loops) {
-    return edge;
-  }
   // A thousandth of the flat prior (sigma 32 m, 160 deg), as the path
   // constraints' floor: only so that the solve and the inverse below exist
   // where the points say nothing.
   const Eigen::Matrix3d flat = 1e-3 * flatPrior();
+  const bool has_free_axis = !free_axis.isZero();
+  edge.information =
+      has_free_axis
+          ? Eigen::Matrix3d(withoutDirection(match_information, asTranslation(free_axis)) + flat)
+          : match_information;
+  if (!options.refine_loops) {
+    return edge;
+  }
   const RefinedPose r =
       refinePose(LineMap(candidate.submap, options.refine), query, match, flat, options.refine);
   if (!r.refined) {
     return edge;
   }
   // The points' own estimate, off the correlative lattice where the walls
-  // constrain it, the match's pose where they do not (odometry_model.h).
+  // constrain it (odometry_model.h).
   edge.measurement = dataEstimate(r.pose, r.data_information, match, flat);
+  // Along a bare corridor's axis the points' information is only what their
+  // normals' noise makes up, and their estimate there wanders with it (by a
+  // rounding's worth of difference in the solve: 1.3 cm with one compiler,
+  // 7.6 cm with another, in LoopEdge.ACorridorsAxisGetsNoInformation). That
+  // direction is dropped, as the path constraints drop theirs, and the edge
+  // keeps the match's pose along it. A match ambiguous along a line
+  // (tryCandidate) leaves that line free in the same way.
+  Eigen::Matrix3d data = r.data_information;
+  const WeakestTranslation weak = weakestTranslation(data);
+  const Eigen::Vector2d axis = has_free_axis ? free_axis
+                               : weak.ratio < options.min_axis_ratio
+                                   ? Eigen::Vector2d(weak.direction.head<2>())
+                                   : Eigen::Vector2d::Zero();
+  if (!axis.isZero()) {
+    data = withoutDirection(data, asTranslation(axis));
+    freeAlong(axis, match, edge);
+  }
   //   Sigma_loop = Sigma_match + (s H_points + L_flat)^-1
-  const Eigen::Matrix3d points = options.refine.information_scale * r.data_information + flat;
+  const Eigen::Matrix3d points = options.refine.information_scale * data + flat;
   const Eigen::Matrix3d information = (match_information.inverse() + points.inverse()).inverse();
   edge.information = 0.5 * (information + information.transpose());
   return edge;
@@ -135,21 +196,26 @@ LoopSearchResult runLoopSearch(const LoopSearch& search, const LoopClosureOption
   for (const LoopCandidate& c : search.candidates) {
     ++r.candidates;
     ScanMatch match;
-    const Verdict v = tryCandidate(c, query, search, options, match_options, match);
+    Eigen::Vector2d free_axis;
+    const Verdict v = tryCandidate(c, query, search, options, match_options, match, free_axis);
     if (v != Verdict::kMatched) {
       ++(v == Verdict::kNoMatch     ? r.rejected_match
          : v == Verdict::kAmbiguous ? r.rejected_ambiguous
                                     : r.rejected_free_space);
       continue;
     }
-    if (match.score > r.match.score) {  // the best verified candidate
+    r.axis_only += free_axis.isZero() ? 0 : 1;
+    // The best verified candidate, one that fixes every direction first.
+    const bool fixes_all = free_axis.isZero(), best_fixes_all = r.found && r.free_axis.isZero();
+    if (fixes_all != best_fixes_all ? fixes_all : match.score > r.match.score) {
       r.found = true;
       r.match = match;
+      r.free_axis = free_axis;
       best = &c;
     }
   }
   if (r.found) {
-    r.edge = loopEdge(*best, query, r.match.pose, options);
+    r.edge = loopEdge(*best, query, r.match.pose, options, r.free_axis);
     r.edge.to = search.newest;
   }
   r.search_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -30,8 +30,7 @@ Eigen::Matrix3d degenerateAlongTrackRemoved(const Eigen::Matrix3d& information, 
   if (along.dot(information * along) >= min_along_ratio * across.dot(information * across)) {
     return information;
   }
-  const Eigen::Matrix3d q = Eigen::Matrix3d::Identity() - along * along.transpose();
-  return q * information * q;
+  return withoutDirection(information, along);
 }
 
 }  // namespace

@@ -144,11 +144,25 @@ struct ScanMatcher::Search {
   /// Level-0 blocks inside this box (angle and cell offsets, inclusive) do
   /// not count (matchOutside); empty when lo > hi.
   int ex_a0 = 1, ex_a1 = 0, ex_x0 = 0, ex_x1 = -1, ex_y0 = 0, ex_y1 = -1;
+  /// ... and so are the offsets of those angles within band_w cells of the
+  /// line through (band_x, band_y) (cell offsets) whose unit normal is
+  /// (band_nx, band_ny); none when band_w < 0.
+  double band_x = 0, band_y = 0, band_nx = 0, band_ny = 1, band_w = -1;
+  bool inBand(double x, double y) const {
+    return std::abs(band_nx * (x - band_x) + band_ny * (y - band_y)) <= band_w;
+  }
   /// The whole block is excluded: none of its offsets counts, at any level.
   bool excluded(const Block& b) const {
+    if (b.angle < ex_a0 || b.angle > ex_a1) {
+      return false;
+    }
     const int last = (1 << b.level) - 1;
-    return b.angle >= ex_a0 && b.angle <= ex_a1 && b.x >= ex_x0 && b.x + last <= ex_x1 &&
-           b.y >= ex_y0 && b.y + last <= ex_y1;
+    if (b.x >= ex_x0 && b.x + last <= ex_x1 && b.y >= ex_y0 && b.y + last <= ex_y1) {
+      return true;
+    }
+    // A band is convex: the block is inside when its four corners are.
+    return band_w >= 0 && inBand(b.x, b.y) && inBand(b.x + last, b.y) && inBand(b.x, b.y + last) &&
+           inBand(b.x + last, b.y + last);
   }
 
   double bound(const Block& b) const {
@@ -200,17 +214,27 @@ ScanMatch ScanMatcher::match(const std::vector<Eigen::Vector2d>& query_in,
 ScanMatch ScanMatcher::matchOutside(const std::vector<Eigen::Vector2d>& query,
                                     const MatchWindow& window, const MatchWindow& excluded,
                                     double min_score) const {
-  return search(query, window, excluded, min_score, false);
+  return search(query, window, excluded, min_score, false, Band{});
 }
 
 bool ScanMatcher::anyOutside(const std::vector<Eigen::Vector2d>& query, const MatchWindow& window,
                              const MatchWindow& excluded, double min_score) const {
-  return search(query, window, excluded, min_score, true).found;
+  return search(query, window, excluded, min_score, true, Band{}).found;
+}
+
+bool ScanMatcher::anyOutsideBand(const std::vector<Eigen::Vector2d>& query,
+                                 const MatchWindow& window, const MatchWindow& excluded,
+                                 const Eigen::Vector2d& axis, double band_m,
+                                 double min_score) const {
+  Band band;
+  band.axis = axis.normalized();
+  band.half_width_m = band_m;
+  return search(query, window, excluded, min_score, true, band).found;
 }
 
 ScanMatch ScanMatcher::search(const std::vector<Eigen::Vector2d>& query_in,
                               const MatchWindow& window, const MatchWindow& excluded,
-                              double min_score, bool first_only) const {
+                              double min_score, bool first_only, const Band& band) const {
   const std::vector<Eigen::Vector2d> query =
       thinned(query_in, options_.query_voxel_m, options_.max_query_points);
   if (query.empty() || grid_.levels.empty()) {
@@ -243,6 +267,13 @@ ScanMatch ScanMatcher::search(const std::vector<Eigen::Vector2d>& query_in,
     const double ha = excluded.angular_deg * M_PI / 180.0 / step;
     bnb.ex_a0 = static_cast<int>(std::floor(da - ha)) + n_angles;
     bnb.ex_a1 = static_cast<int>(std::ceil(da + ha)) + n_angles;
+    if (band.half_width_m >= 0.0) {
+      bnb.band_x = (excluded.guess.x - x_lo) / res;
+      bnb.band_y = (excluded.guess.y - y_lo) / res;
+      bnb.band_nx = -band.axis.y();
+      bnb.band_ny = band.axis.x();
+      bnb.band_w = band.half_width_m / res;
+    }
   }
   const int top = options_.levels - 1;
   std::vector<Search::Block> roots;

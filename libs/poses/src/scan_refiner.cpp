@@ -165,6 +165,23 @@ Eigen::Matrix3d flatPrior() {
   return Eigen::Vector3d(1.0, 1.0, 1.0 / (sigma_rad * sigma_rad)).asDiagonal();
 }
 
+Eigen::Matrix3d withoutDirection(const Eigen::Matrix3d& information,
+                                 const Eigen::Vector3d& direction) {
+  const Eigen::Matrix3d q = Eigen::Matrix3d::Identity() - direction * direction.transpose();
+  return q * information * q;
+}
+
+WeakestTranslation weakestTranslation(const Eigen::Matrix3d& information) {
+  WeakestTranslation w;
+  const Eigen::Matrix2d block = information.topLeftCorner<2, 2>();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(0.5 * (block + block.transpose()));
+  const double small = std::max(eig.eigenvalues()(0), 0.0), large = eig.eigenvalues()(1);
+  w.direction.head<2>() = eig.eigenvectors().col(0).normalized();
+  w.direction.z() = 0.0;
+  w.ratio = large > 0.0 ? small / large : 0.0;
+  return w;
+}
+
 RefinedPose refinePose(const LineMap& map, const std::vector<Eigen::Vector2d>& query,
                        const Pose2& guess, const Eigen::Matrix3d& prior,
                        const ScanRefineOptions& options) {

@@ -70,6 +70,9 @@ struct LoopClosure {
   double score = 0;
   double moved_m = 0;   ///< how far the newer keyframe moved when the graph was solved
   double solve_ms = 0;  ///< that solve's wall time
+  /// The direction (older's frame) the loop left free: a match ambiguous
+  /// along a corridor's axis (accept_axis_ambiguity); zero for none.
+  Eigen::Vector2d free_axis = Eigen::Vector2d::Zero();
 };
 
 struct LoopClosureStats {
@@ -81,6 +84,7 @@ struct LoopClosureStats {
   std::size_t rejected_match = 0;       ///< no pose of the window scored min_score
   std::size_t rejected_ambiguous = 0;   ///< another pose of the window scored nearly as well
   std::size_t rejected_free_space = 0;  ///< the best pose contradicts the beams' free space
+  std::size_t axis_only = 0;            ///< verified, ambiguous along one line only
   std::size_t rejected_chi2 = 0;        ///< refused by the innovation test
   std::size_t accepted = 0;
   std::size_t path_constraints = 0;           ///< keyframe-to-submap edges in the last solve

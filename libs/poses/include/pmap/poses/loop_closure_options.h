@@ -34,6 +34,11 @@ struct LoopClosureOptions {
   /// the best, (0, 1]: the place is ambiguous (a corridor's axis).
   double max_ambiguity = 0.9;
   double ambiguity_distance_m = 1.0;
+  /// ... unless all those poses lie on one line through the best (along the
+  /// translation the walls constrain least, within two cells across and
+  /// 5 deg): then the loop is kept, its edge free along that line
+  /// (loop_search.h, loopEdge).
+  bool accept_axis_ambiguity = false;
   /// A match is refused when more than this fraction of one side's points
   /// lie where the other side's beams passed freely (free_space.h), [0, 1].
   /// 0.1: the simulated ring's one aliased match had 0.1-0.25, its true
@@ -54,6 +59,12 @@ struct LoopClosureOptions {
   /// loop edge is the points' estimate, and its information adds to the
   /// sigmas above what the points leave open (loop_search.h, loopEdge).
   bool refine_loops = true;
+  /// ... except along the translation the points constrain least when its
+  /// information is below this share of the other's (a corridor's axis,
+  /// whose information is the normals' noise, path_constraints.h's
+  /// min_along_ratio): there the edge has the match's pose and none of the
+  /// points' information, [0, 1].
+  double min_axis_ratio = 0.01;
   /// The front end's relative pose as an edge's prior (without calibrated
   /// odometry): translation sigma per metre moved, heading sigma plus 5 %
   /// of the turn.

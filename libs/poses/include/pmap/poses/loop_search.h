@@ -40,9 +40,14 @@ struct LoopSearchResult {
   std::size_t rejected_match = 0;       ///< no pose of the window scored min_score
   std::size_t rejected_ambiguous = 0;   ///< another pose scored nearly as well / window edge
   std::size_t rejected_free_space = 0;  ///< the best pose contradicts the beams' free space
-  bool found = false;                   ///< a verified match: edge and match are set
-  PoseEdge edge;                        ///< older -> newest (loopEdge)
+  /// Verified although ambiguous along one line (accept_axis_ambiguity).
+  std::size_t axis_only = 0;
+  bool found = false;  ///< a verified match: edge and match are set
+  PoseEdge edge;       ///< older -> newest (loopEdge)
   ScanMatch match;
+  /// The match is ambiguous along this unit x-y direction (the older
+  /// keyframe's frame), which its edge leaves free; zero when it is not.
+  Eigen::Vector2d free_axis = Eigen::Vector2d::Zero();
   double search_s = 0;  ///< wall time of the search
 };
 
@@ -55,9 +60,14 @@ struct LoopSearchResult {
 /// Sigma_match = diag(loop_sigma_m^2, loop_sigma_m^2, loop_sigma_deg^2): the
 /// match's own error (its 5 cm lattice, any scene) plus what the points
 /// leave open (a corridor's axis). Without it (or too few matched points):
-/// the match, with the information Sigma_match^-1.
+/// the match, with the information Sigma_match^-1. A non-zero `free_axis`
+/// (unit, x-y), or with refine_loops the translation the points constrain
+/// least when it has less than min_axis_ratio of the other's information,
+/// is left free: the edge has the match's pose along it and no information
+/// there but the floor's.
 PoseEdge loopEdge(const LoopCandidate& candidate, const std::vector<Eigen::Vector2d>& query,
-                  const Pose2& match, const LoopClosureOptions& options);
+                  const Pose2& match, const LoopClosureOptions& options,
+                  const Eigen::Vector2d& free_axis = Eigen::Vector2d::Zero());
 
 LoopSearchResult runLoopSearch(const LoopSearch& search, const LoopClosureOptions& options,
                                const ScanMatchOptions& match_options);

@@ -72,10 +72,23 @@ class ScanMatcher {
   /// pose outside `excluded` scoring more than `min_score`.
   bool anyOutside(const std::vector<Eigen::Vector2d>& query, const MatchWindow& window,
                   const MatchWindow& excluded, double min_score) const;
+  /// As anyOutside(), but the poses within band_m of the line through
+  /// excluded.guess along `axis` (a unit x-y direction), and within
+  /// excluded.angular_deg of its heading, do not count either: whether a
+  /// place is ambiguous other than along that line (a corridor's axis, a
+  /// row of doors).
+  bool anyOutsideBand(const std::vector<Eigen::Vector2d>& query, const MatchWindow& window,
+                      const MatchWindow& excluded, const Eigen::Vector2d& axis, double band_m,
+                      double min_score) const;
 
  private:
+  struct Band {
+    Eigen::Vector2d axis = Eigen::Vector2d::UnitX();
+    double half_width_m = -1.0;  ///< < 0: no band
+  };
   ScanMatch search(const std::vector<Eigen::Vector2d>& query, const MatchWindow& window,
-                   const MatchWindow& excluded, double min_score, bool first_only) const;
+                   const MatchWindow& excluded, double min_score, bool first_only,
+                   const Band& band) const;
   struct Grid {
     double x0 = 0, y0 = 0;  ///< lower corner (m)
     /// level h: the likelihood max-pooled over [c, c + 2^h) x [r, r + 2^h);

@@ -96,6 +96,22 @@ struct RefinedPose {
 /// (dataEstimate, odometry_model.h).
 Eigen::Matrix3d flatPrior();
 
+/// `information` without the direction `direction` (unit): (I - d d^T)
+/// L (I - d d^T), nothing along it, the rest unchanged.
+Eigen::Matrix3d withoutDirection(const Eigen::Matrix3d& information,
+                                 const Eigen::Vector3d& direction);
+
+/// The translation the points constrain least: the eigenvector (x, y, 0)
+/// of the information's translation block with the smaller eigenvalue, and
+/// that eigenvalue's ratio to the larger one (0 when the block is zero).
+/// Along a bare corridor it is the axis, whose information comes only from
+/// the normals' noise (a ratio about 1e-4, the walls across several 1e5).
+struct WeakestTranslation {
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitX();
+  double ratio = 0.0;
+};
+WeakestTranslation weakestTranslation(const Eigen::Matrix3d& information);
+
 /// The pose of the scan `query` (points in its own frame) in `map`'s frame,
 /// started from `guess`, held to `prior_mean` with information `prior`
 /// (symmetric positive definite). Deterministic.
