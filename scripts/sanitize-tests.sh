@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the unit and robustness test executables, the three apps and the
 # libFuzzer targets with clang, AddressSanitizer + UndefinedBehaviorSanitizer
-# (+ float-cast-overflow; -DPMAP_SANITIZE=ON -DPMAP_FUZZ=ON; CMake target
+# (+ float-cast-overflow; -O2, at which Eigen's small fixed-size vectors are
+# inlined: 1.6 times faster than -O1; -DPMAP_SANITIZE=ON -DPMAP_FUZZ=ON; CMake target
 # `sanitized-tests`, which includes the fuzz targets) in ./build-asan (or
 # $ASAN_BUILD_DIR), and runs those tests there (ctest -L 'unit|robustness';
 # the end-to-end tests on simulated worlds, real data, the browser and the
@@ -23,7 +24,7 @@ if [ -f "$build_dir/CMakeCache.txt" ] &&
   rm -rf "$build_dir"
 fi
 cmake -S . -B "$build_dir" -DCMAKE_CXX_COMPILER=clang++ -DPMAP_SANITIZE=ON -DPMAP_FUZZ=ON \
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1"
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1"
 cmake --build "$build_dir" -j"$jobs" --target sanitized-tests
 
 # Leaks inside third-party libraries only are suppressed (the file says which).
@@ -34,13 +35,20 @@ export ASAN_OPTIONS="allocator_may_return_null=1:abort_on_error=1:detect_leaks=1
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
 
+# Whole simulated runs that check accuracy or report lines only, and take
+# minutes each under ASan (2 cores, 2026-12-06: 46-121 s each, 6 % of the
+# step): their code is what the other poses and app tests run, and they run
+# in the ordinary build (doc/robustness.md).
+slow_runs='LoopClosure\.(CalibratedOdometryHoldsTheKeyframesToThePath|TheWorkersLoopTestsAreTheBackEndsOwn)'
+slow_runs+='|UserItems\.(Item4_ProgressLinesForLongStagesWhenNotATerminal|Item5_KinectFrameTimesAreNotNegative)'
+
 log="$build_dir/ctest-sanitize.log"
 status=0
 # --repeat until-pass:2: a test that fails once and passes on its rerun was
 # hit by a sanitizer tool crash (LeakSanitizer's tracer catching SIGSEGV at
 # exit on this loaded machine), not by a report: any report text in the log,
 # first attempt included, still fails the run below.
-ctest --test-dir "$build_dir" -L 'unit|robustness' --output-on-failure -j"$jobs" --timeout 900 \
+ctest --test-dir "$build_dir" -L 'unit|robustness' -E "$slow_runs" --output-on-failure -j"$jobs" --timeout 900 \
   --repeat until-pass:2 2>&1 |
   tee "$log" || status=$?
 # Belt and braces: a report that did not fail its test still fails the run.

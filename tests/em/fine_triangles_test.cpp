@@ -123,5 +123,84 @@ TEST(FineTriangles, TwoHopNeighboursArePartners) {
   expectValid(tris, c.points, outlier, 0.15);
 }
 
+// Thinned to cubes (fine_cell_m > 0): one vertex per cube, the same validity.
+TEST(FineTriangles, CubeRepresentativesAreOnePerCubeNearestItsMean) {
+  // Cube [0, 0.1)^3: three points whose mean is (0.04, 0.05, 0.05); the
+  // middle one is nearest it. Cube [0.1, 0.2) x ...: one point. An inlier in
+  // a third cube is not represented.
+  const std::vector<Eigen::Vector3d> pts = {{0.01, 0.05, 0.05},
+                                            {0.05, 0.05, 0.05},
+                                            {0.06, 0.05, 0.05},
+                                            {0.15, 0.05, 0.05},
+                                            {0.35, 0.05, 0.05}};
+  const std::vector<char> outlier = {1, 1, 1, 1, 0};
+  EXPECT_EQ(cubeRepresentatives(pts, outlier, 0.1), (std::vector<std::int32_t>{1, 3}));
+  // Cube order, not index order: the cube at negative x comes first.
+  const std::vector<Eigen::Vector3d> two = {{0.5, 0.0, 0.0}, {-0.5, 0.0, 0.0}};
+  EXPECT_EQ(cubeRepresentatives(two, {1, 1}, 0.1), (std::vector<std::int32_t>{1, 0}));
+}
+
+TEST(FineTriangles, ThinnedToCubesAClutterObjectCostsItsSizeNotItsSamples) {
+  // The same cylinder sampled every 3 cm and every 1 cm (9 times the points):
+  // with 7.5 cm cubes both give about the same number of valid triangles,
+  // which still cover the object; without cubes the dense one gives ~9 times
+  // as many.
+  testing::Cloud coarse;
+  testing::Cloud dense;
+  std::mt19937_64 rng(4);
+  testing::addCylinder(coarse, {0, 0, 0}, 0.25, 0.8, 0.03, 0.005, rng, 0);
+  testing::addCylinder(dense, {0, 0, 0}, 0.25, 0.8, 0.01, 0.005, rng, 0);
+  const std::vector<char> all_c(coarse.points.size(), 1);
+  const std::vector<char> all_d(dense.points.size(), 1);
+  const auto tc = fineTriangles(coarse.points, coarse.neighbours(), all_c, 0.15, 0.075);
+  const auto td = fineTriangles(dense.points, dense.neighbours(), all_d, 0.15, 0.075);
+  expectValid(tc, coarse.points, all_c, 0.15);
+  expectValid(td, dense.points, all_d, 0.15);
+  const auto paper = fineTriangles(dense.points, dense.neighbours(), all_d, 0.15);
+  EXPECT_GT(paper.size(), 5 * td.size());
+  EXPECT_NEAR(static_cast<double>(td.size()), static_cast<double>(tc.size()),
+              0.3 * static_cast<double>(tc.size()));
+  // Most cubes of the cylinder's surface end as a vertex of some triangle.
+  const auto reps = cubeRepresentatives(dense.points, all_d, 0.075);
+  EXPECT_GT(3 * td.size(), 0.7 * reps.size());
+}
+
+TEST(FineTriangles, ThinnedToCubesOnlyOutliersAndNoLongEdges) {
+  testing::Cloud c;
+  std::mt19937_64 rng(5);
+  testing::addPlane(c, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1.0, 1.0, 0.02, 0.0, rng, 0);
+  std::vector<char> outlier(c.points.size(), 0);
+  EXPECT_TRUE(fineTriangles(c.points, c.neighbours(), outlier, 0.15, 0.075).empty());
+  for (std::size_t i = 0; i < outlier.size(); ++i) {
+    outlier[i] = (i * 7919) % 3 != 0 ? 1 : 0;
+  }
+  const auto tris = fineTriangles(c.points, c.neighbours(), outlier, 0.15, 0.075);
+  EXPECT_FALSE(tris.empty());
+  expectValid(tris, c.points, outlier, 0.15);
+  // Cubes 0.12 m apart cannot be bridged by 0.1 m edges.
+  testing::Cloud sparse;
+  testing::addPlane(sparse, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1.0, 1.0, 0.12, 0.0, rng, 0);
+  const std::vector<char> all(sparse.points.size(), 1);
+  EXPECT_TRUE(fineTriangles(sparse.points, sparse.neighbours(), all, 0.1, 0.05).empty());
+}
+
+TEST(FineTriangles, ThinnedToCubesTheOrderOfThePointsDoesNotMatter) {
+  testing::Cloud c;
+  std::mt19937_64 rng(6);
+  testing::addCylinder(c, {0, 0, 0}, 0.3, 0.6, 0.02, 0.005, rng, 0);
+  const std::vector<char> all(c.points.size(), 1);
+  const auto tris = fineTriangles(c.points, c.neighbours(), all, 0.15, 0.075);
+  // Reversed indices: the same triangles, as point positions.
+  std::vector<Eigen::Vector3d> rev(c.points.rbegin(), c.points.rend());
+  const auto rtris = fineTriangles(rev, {}, all, 0.15, 0.075);
+  ASSERT_EQ(rtris.size(), tris.size());
+  const auto last = static_cast<std::int32_t>(c.points.size()) - 1;
+  for (std::size_t t = 0; t < tris.size(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(last - rtris[t][k], tris[t][k]);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace pmap::em

@@ -68,6 +68,9 @@ TEST(PlanarEmOptions, EachBadValueIsRejectedWithItsName) {
       {"responsibility_tolerance", [](auto& o) { o.responsibility_tolerance = kNan; }},
       {"fine_max_edge_m", [](auto& o) { o.fine_max_edge_m = 0.0; }},
       {"fine_max_edge_m", [](auto& o) { o.fine_max_edge_m = kInf; }},
+      {"fine_cell_m", [](auto& o) { o.fine_cell_m = -0.01; }},
+      {"fine_cell_m", [](auto& o) { o.fine_cell_m = 0.15; }},  // not below fine_max_edge_m
+      {"fine_cell_m", [](auto& o) { o.fine_cell_m = kNan; }},
       {"min_curvature_depth_m", [](auto& o) { o.min_curvature_depth_m = -0.01; }},
       {"coarse_points", [](auto& o) { o.coarse_points = 500; }},
       {"coarse_points", [](auto& o) { o.coarse_points = -1; }},

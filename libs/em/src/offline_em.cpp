@@ -71,7 +71,8 @@ PlanarMap finalizeMap(const std::vector<Eigen::Vector3d>& points, const Neighbou
   for (std::size_t i = 0; i < points.size(); ++i) {
     outlier[i] = resp.best[i] < 0 ? 1 : 0;
   }
-  map.fine_triangles = fineTriangles(points, neighbours, outlier, options.fine_max_edge_m);
+  map.fine_triangles =
+      fineTriangles(points, neighbours, outlier, options.fine_max_edge_m, options.fine_cell_m);
   for (std::size_t j = 0; j < surfaces.size(); ++j) {
     surfaces[j].support = static_cast<std::int32_t>(members[j].size());
   }

@@ -123,8 +123,8 @@ PlanarMap OnlineEm::map() const {
     outlier[i] = m.assignment[i] < 0 ? 1 : 0;
   }
   m.explained_fraction = n == 0 ? 0.0 : static_cast<double>(explained) / static_cast<double>(n);
-  m.fine_triangles =
-      fineTriangles(store_.points(), store_.neighbours(), outlier, options_.fine_max_edge_m);
+  m.fine_triangles = fineTriangles(store_.points(), store_.neighbours(), outlier,
+                                   options_.fine_max_edge_m, options_.fine_cell_m);
   return m;
 }
 

@@ -71,6 +71,8 @@ bool PlanarEmOptions::validate(std::string* why) const {
   }
   if (!positive(fine_max_edge_m))
     return fail(why, "fine_max_edge_m must be > 0");
+  if (!(fine_cell_m == 0.0 || (fine_cell_m > 0.0 && fine_cell_m < fine_max_edge_m)))
+    return fail(why, "fine_cell_m must be 0 (off) or in (0, fine_max_edge_m)");
   if (coarse_points != 0 && coarse_points < 1000)
     return fail(why, "coarse_points must be 0 (off) or >= 1000");
   if (fine_iterations < 1)

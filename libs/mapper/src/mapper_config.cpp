@@ -184,6 +184,7 @@ void PlanarEmSection::load(config::SectionReader& r) {
   r.read("min_gain", em.min_gain);
   r.read("responsibility_tolerance", em.responsibility_tolerance);
   r.read("fine_max_edge_m", em.fine_max_edge_m);
+  r.read("fine_cell_m", em.fine_cell_m);
   auto seed = static_cast<std::int64_t>(em.seed);
   r.read("seed", seed);
   if (seed < 0) {

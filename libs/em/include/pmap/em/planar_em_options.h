@@ -141,6 +141,10 @@ struct PlanarEmOptions {
   /// Longest edge of a fine triangle (m), > 0: a few beam spacings, so
   /// triangles bridge neighbouring outliers but not gaps between objects.
   double fine_max_edge_m = 0.15;
+  /// Fine triangles from outliers thinned to one per cube of this side (m),
+  /// 0 or in (0, fine_max_edge_m): 0 is the paper's method (every outlier a
+  /// vertex). fine_triangles.h; doc/em.md, "Fine triangles".
+  double fine_cell_m = 0.0;
   std::uint64_t seed = 1;  ///< random choices (seed selection)
   int threads = 1;         ///< >= 1; results do not depend on it
 
