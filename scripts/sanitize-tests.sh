@@ -2,7 +2,8 @@
 # Builds the unit and robustness test executables, the three apps and the
 # libFuzzer targets with clang, AddressSanitizer + UndefinedBehaviorSanitizer
 # (+ float-cast-overflow; -O2, at which Eigen's small fixed-size vectors are
-# inlined: 1.6 times faster than -O1; -DPMAP_SANITIZE=ON -DPMAP_FUZZ=ON; CMake target
+# inlined: the tests run 1.6 times faster than at -O1, for a longer build,
+# doc/robustness.md; -DPMAP_SANITIZE=ON -DPMAP_FUZZ=ON; CMake target
 # `sanitized-tests`, which includes the fuzz targets) in ./build-asan (or
 # $ASAN_BUILD_DIR), and runs those tests there (ctest -L 'unit|robustness';
 # the end-to-end tests on simulated worlds, real data, the browser and the

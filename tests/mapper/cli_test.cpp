@@ -133,5 +133,50 @@ TEST(MapperCli, PlyCloudInput) {
   EXPECT_EQ(s["points_dropped_by_reason"]["non_finite"], 1);
 }
 
+// An offline EM stopped by its iteration cap says so (a warning in
+// summary.json), instead of passing an unfinished model for a whole map.
+TEST(MapperCli, AnEmStoppedByItsIterationCapIsAWarning) {
+  const fs::path dir = testing::freshTestDir("cli_iteration_cap");
+  {
+    std::ofstream ply(dir / "c.ply");
+    ply << "ply\nformat ascii 1.0\nelement vertex 800\nproperty float x\nproperty float y\n"
+           "property float z\nend_header\n";
+    for (int i = 0; i < 400; ++i) {  // a floor and a wall, 2 cm apart
+      ply << 0.02 * (i % 20) << ' ' << 0.02 * (i / 20) << " 0\n";
+      ply << "1 " << 0.02 * (i % 20) << ' ' << 0.02 * (i / 20) + 0.5 << '\n';
+    }
+    // config/default.ini with max_iterations = 1 (an ini must be whole).
+    std::ifstream in(kDefaultIni);
+    std::string ini((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ini.replace(ini.find("[PlanarEM]\n"), 11, "[PlanarEM]\nmax_iterations = 1\n");
+    ini.replace(ini.find("@include icp.ini"), 16,
+                "@include " + (kDefaultIni.parent_path() / "icp.ini").string());
+    std::ofstream(dir / "cap.ini") << ini;
+  }
+  const auto warningsOf = [&](const std::string& name, const std::vector<std::string>& extra) {
+    const fs::path out = dir / name;
+    std::vector<std::string> args = {"--cloud", (dir / "c.ply").string(), "--out", out.string(),
+                                     "-q"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    EXPECT_EQ(run(args), 0);
+    std::ifstream in(out / "summary.json");
+    const auto s = nlohmann::json::parse(in);
+    std::string all;
+    for (const auto& w : s["warnings"]) {
+      all += w.get<std::string>() + "\n";
+    }
+    return std::make_pair(s["termination"].get<std::string>(), all);
+  };
+  const auto [capped, capped_warnings] =
+      warningsOf("capped", {"--config", (dir / "cap.ini").string(), "--mode", "offline"});
+  EXPECT_EQ(capped, "max_iterations");
+  EXPECT_NE(capped_warnings.find("stopped at [PlanarEM] max_iterations (1)"), std::string::npos)
+      << capped_warnings;
+  const auto [converged, warnings] =
+      warningsOf("converged", {"--config", kDefaultIni.string(), "--mode", "offline"});
+  EXPECT_EQ(converged, "converged");
+  EXPECT_EQ(warnings.find("max_iterations"), std::string::npos) << warnings;
+}
+
 }  // namespace
 }  // namespace pmap::mapper

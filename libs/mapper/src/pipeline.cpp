@@ -192,7 +192,24 @@ MappingResult runPipeline(const MapperConfig& given, const MapperArgs& args, Sta
         "[Poses] plane_refinement runs with --mode offline only: this online run did not use it");
   }
   noteNothingFound(args, result);
+  noteUnconverged(config, result);
   return result;
+}
+
+void noteUnconverged(const MapperConfig& config, MappingResult& result) {
+  if (!result.planar || !result.planar->offline ||
+      result.planar->offline->termination != em::Termination::kMaxIterations) {
+    return;
+  }
+  char explained[32];
+  std::snprintf(explained, sizeof explained, "%.1f %%",
+                100.0 * result.planar->map.explained_fraction);
+  result.warnings.push_back(
+      "the offline EM stopped at [PlanarEM] max_iterations (" +
+      std::to_string(config.planar_em.em.max_iterations) +
+      ") before it converged: its model selection may be unfinished (" + explained +
+      " explained); raise max_iterations, or set coarse_points for a large cloud "
+      "(doc/cloud-scaling.md)");
 }
 
 void noteNothingFound(const MapperArgs& args, MappingResult& result) {

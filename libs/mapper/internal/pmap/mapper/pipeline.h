@@ -22,5 +22,7 @@ MappingResult runPipeline(const MapperConfig& config, const MapperArgs& args, St
 /// but kept no structure point, or found no planar surface, is not an error.
 /// It exits 0 with valid, empty outputs; this adds the warning that says so.
 void noteNothingFound(const MapperArgs& args, MappingResult& result);
+/// Adds a warning when the offline EM stopped at max_iterations.
+void noteUnconverged(const MapperConfig& config, MappingResult& result);
 
 }  // namespace pmap::mapper
