@@ -237,8 +237,9 @@ Issue 16 asks, on such worlds: explained ≥ 95 %, ratio counting polygons
 3σ apart, EM p99 per scan ≤ 2 ms, last tenth ÷ second ≤ 1.2.
 
 ## Not measured here (issue 16)
-A second cluttered world, glass, people walking through and the peer
-benchmark (PCL, CGAL) are not built yet. The cost of cloud mode against the
+A second cluttered world, glass and people walking through are not built
+yet. The peer benchmark (PCL, CGAL) is doc/peer-benchmark.md
+(\`scripts/peer-benchmark.sh\`). The cost of cloud mode against the
 number of points (0.25M to 5M) is in doc/cloud-scaling.md
 (\`scripts/cloud-scaling-report.sh\`): it is not linear yet. The voxel
 mode (geb079) and \`sigma_m = auto\` are in doc/simulator.md and doc/em.md.
