@@ -9,14 +9,18 @@ work, commit, cores = sys.argv[1], sys.argv[2], sys.argv[3]
 CLOUDS = [
     ("default", "Simulated `default` world (config/worlds/default.json), σ 2 cm, "
                 "the points of a run on its true poses"),
+    ("office", "Simulated `office` world (config/worlds/office.json), σ 2 cm, true poses"),
     ("cluttered", "Simulated `cluttered` world (config/worlds/cluttered.json: rooms with desks, "
                   "shelves and cabinets, ceiling clutter, lost, spurious and mixed returns; "
                   "doc/real-geometry.md), σ 2 cm, true poses"),
+    ("cluttered5", "The `cluttered` world at σ 5 cm, true poses"),
     ("kinect", "MRPT's Kinect frame (`/usr/share/mrpt/datasets/tests_rgbd.rawlog`, Debian "
                "mrpt-common): no ground truth, so no scores"),
 ]
 SHIPPED = {"default": ("ours-all", "config/default.ini"),
+           "office": ("ours-all", "config/default.ini"),
            "cluttered": ("ours-all", "config/default.ini"),
+           "cluttered5": ("ours-all", "config/default.ini"),
            "kinect": ("ours-coarse", "config/mrpt-rgbd.ini")}
 NAMES = [
     ("ours-all", "ours, every point in every iteration (`coarse_points = 0`)"),
@@ -140,7 +144,7 @@ for key, _ in CLOUDS:
                                              rows[fastest]["planes"], rows[fastest]["seconds"]))
 lines.append("""
 The coarse-to-fine variant selects the model on a sample of 20,000 points and, on the
-cluttered cloud, loses planes that the run on all points finds (the lists above; why was not
+cluttered clouds, loses planes that the run on all points finds (the lists above; why was not
 analysed). As shipped, config/default.ini runs on all points and config/mrpt-rgbd.ini (single
 Kinect frames, 273,000 points) coarse to fine. The Kinect frame has no labels, so its plane
 counts say nothing about right or wrong; its picture with ours'
