@@ -2,6 +2,18 @@
 
 namespace pmap::em {
 
+OnlineStore::OnlineStore(int window_scans, std::size_t reserved) : window_scans_(window_scans) {
+  points_.reserve(reserved);
+  rows_.reserve(reserved);
+  neighbours_.reserve(reserved);
+  best_.reserve(reserved);
+  member_pos_.reserve(reserved);
+  visits_.reserve(reserved);
+  queued_.reserve(reserved);
+  not_planar_.reserve(reserved);
+  seed_tries_.reserve(reserved);
+}
+
 std::size_t OnlineStore::appendScan(const std::vector<Eigen::Vector3d>& points,
                                     const std::vector<GridKey>& keys) {
   const std::size_t first = points_.size();

@@ -29,10 +29,18 @@ struct Membership {
   bool active = false;              ///< members came, went or moved since the last M-step
 };
 
+/// Measurements the store has room for before its per-measurement arrays
+/// first grow (2^20; 59 MB of address space). Growing a std::vector copies
+/// it, and the scan that did it was the slowest of the run (doc/em.md, "No
+/// growth spikes"). The room is reserved, not written: a page becomes
+/// resident when a measurement is stored in it. Beyond it the arrays double.
+constexpr std::size_t kReservedMeasurements = std::size_t{1} << 20;
+
 class OnlineStore {
  public:
-  /// `window_scans`: how many recent scans window() lists (>= 1).
-  explicit OnlineStore(int window_scans) : window_scans_(window_scans) {}
+  /// `window_scans`: how many recent scans window() lists (>= 1);
+  /// `reserved`: room for this many measurements before the first growth.
+  explicit OnlineStore(int window_scans, std::size_t reserved = kReservedMeasurements);
 
   /// Appends one scan's measurements (world frame, finite) with their grid
   /// keys (group = sensor, row = scan rank, col = beam) and links them to
