@@ -92,6 +92,15 @@ class ScopedCgalSeed {
   CGAL::Random saved_;
 };
 
+/// The caller's indices of the points at CGAL's `indices` into `pwns`.
+std::vector<int> inputIndices(const PwnRange& pwns, const std::vector<std::size_t>& indices) {
+  std::vector<int> plane;
+  plane.reserve(indices.size());
+  for (const std::size_t i : indices)
+    plane.push_back(std::get<2>(pwns[i]));
+  return plane;
+}
+
 }  // namespace
 
 Planes cgalEfficientRansac(const std::vector<Eigen::Vector3d>& points, const PeerParams& p) {
@@ -118,11 +127,7 @@ Planes cgalEfficientRansac(const std::vector<Eigen::Vector3d>& points, const Pee
     const std::vector<std::size_t>& assigned = shape->indices_of_assigned_points();
     if (assigned.size() < p.min_support)
       continue;  // detect() already enforces it
-    std::vector<int> plane;
-    plane.reserve(assigned.size());
-    for (const std::size_t i : assigned)
-      plane.push_back(std::get<2>(pwns[i]));
-    planes.push_back(std::move(plane));
+    planes.push_back(inputIndices(pwns, assigned));
   }
   return planes;
 }
@@ -154,13 +159,8 @@ Planes cgalRegionGrowing(const std::vector<Eigen::Vector3d>& points, const PeerP
 
   Planes planes;
   planes.reserve(regions.size());
-  for (const std::vector<std::size_t>& r : regions) {
-    std::vector<int> plane;
-    plane.reserve(r.size());
-    for (const std::size_t i : r)
-      plane.push_back(std::get<2>(pwns[i]));
-    planes.push_back(std::move(plane));
-  }
+  for (const std::vector<std::size_t>& r : regions)
+    planes.push_back(inputIndices(pwns, r));
   return planes;
 }
 

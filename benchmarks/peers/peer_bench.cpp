@@ -79,6 +79,7 @@ struct Cloud {
   std::vector<Eigen::Vector3d> points;
   std::vector<int> plane;          ///< ground-truth plane per point (empty: no ground truth)
   std::vector<std::string> kinds;  ///< per ground-truth plane
+  std::map<int, std::vector<int>> members;  ///< ground-truth plane -> its points
 };
 
 Cloud readCloud(const Args& a) {
@@ -101,6 +102,9 @@ Cloud readCloud(const Args& a) {
       pmap::eval::groundTruthPlanes(gt, m.xyz, pmap::eval::pointLabels(gt, m));
   c.plane = std::move(planes.plane_of_point);
   c.kinds = std::move(planes.kinds);
+  for (std::size_t i = 0; i < c.plane.size(); ++i) {
+    c.members[c.plane[i]].push_back(static_cast<int>(i));
+  }
   return c;
 }
 
@@ -142,16 +146,12 @@ nlohmann::json scoreJson(const Cloud& c, const Planes& planes, std::size_t min_s
   j["gt_matched"] = s.gt_matched;
   j["gt_split"] = s.gt_split;
   // Each missed plane: its points and the normal of their fit, to see what is missed.
-  std::map<int, std::vector<int>> members;
-  for (std::size_t i = 0; i < c.plane.size(); ++i) {
-    members[c.plane[i]].push_back(static_cast<int>(i));
-  }
   j["missed"] = nlohmann::json::array();
   for (const int plane : s.missed) {
-    const Eigen::Vector3d n = pmap::eval::fittedNormal(c.points, members[plane]);
+    const Eigen::Vector3d n = pmap::eval::fittedNormal(c.points, c.members.at(plane));
     j["missed"].push_back({{"plane", plane},
                            {"kind", c.kinds[static_cast<std::size_t>(plane)]},
-                           {"points", members[plane].size()},
+                           {"points", c.members.at(plane).size()},
                            {"normal", {n.x(), n.y(), n.z()}}});
   }
   return j;

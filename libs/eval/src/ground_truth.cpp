@@ -246,10 +246,7 @@ double distanceToCylinder(const GtCylinder& c, const Eigen::Vector3d& p) {
 }
 
 double distanceToBox(const GtBox& b, const Eigen::Vector3d& p) {
-  const double c = std::cos(-b.yaw);
-  const double s = std::sin(-b.yaw);
-  const Eigen::Vector2d d = p.head<2>() - b.centre;
-  const Eigen::Vector3d q(c * d.x() - s * d.y(), s * d.x() + c * d.y(), p.z());
+  const Eigen::Vector3d q = b.local(p);
   const Eigen::Vector3d outside = (b.min - q).cwiseMax(q - b.max).cwiseMax(0.0);
   if (outside.squaredNorm() > 0) {
     return outside.norm();
@@ -278,6 +275,13 @@ double distanceToRectangle(const std::array<Eigen::Vector3d, 4>& c, const Eigen:
   const double da = d.dot(eu) - a;
   const double db = in_plane.dot(ev) - b;
   return std::sqrt(h * h + da * da + db * db);
+}
+
+Eigen::Vector3d GtBox::local(const Eigen::Vector3d& p) const {
+  const double c = std::cos(-yaw);
+  const double s = std::sin(-yaw);
+  const Eigen::Vector2d d = p.head<2>() - centre;
+  return {c * d.x() - s * d.y(), s * d.x() + c * d.y(), p.z()};
 }
 
 const GtRectangle* GroundTruth::surface(int id) const {

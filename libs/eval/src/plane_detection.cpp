@@ -31,14 +31,6 @@ Eigen::Vector3d rectangleNormal(const GtRectangle& r) {
   return n.norm() > 0 ? n.normalized() : r.normal;
 }
 
-/// A box's point in the box's own frame (centre at the origin, no yaw).
-Eigen::Vector3d inBoxFrame(const GtBox& b, const Eigen::Vector3d& p) {
-  const double c = std::cos(-b.yaw);
-  const double s = std::sin(-b.yaw);
-  const Eigen::Vector2d d = p.head<2>() - b.centre;
-  return {c * d.x() - s * d.y(), s * d.x() + c * d.y(), p.z()};
-}
-
 /// Face k of a box (0-5: -x, +x, -y, +y, -z, +z of its frame) as a world plane.
 Eigen::Vector4d boxFace(const GtBox& b, int k) {
   const int axis = k / 2;
@@ -54,7 +46,7 @@ Eigen::Vector4d boxFace(const GtBox& b, int k) {
 
 /// The face of box b nearest to p (in the box's frame).
 int nearestFace(const GtBox& b, const Eigen::Vector3d& p) {
-  const Eigen::Vector3d q = inBoxFrame(b, p);
+  const Eigen::Vector3d q = b.local(p);
   int best = 0;
   double best_d = std::numeric_limits<double>::infinity();
   for (int k = 0; k < 6; ++k) {
@@ -108,7 +100,8 @@ GtPlanes groundTruthPlanes(const GroundTruth& gt, const std::vector<Eigen::Vecto
   std::unordered_map<int, int> first_face;  // box id -> its face 0's candidate
   for (const auto& r : gt.surfaces) {
     rectangle_candidate[r.id] = static_cast<int>(candidates.size());
-    candidates.push_back(canonicalPlane(rectangleNormal(r), rectangleNormal(r).dot(r.corners[0])));
+    const Eigen::Vector3d n = rectangleNormal(r);
+    candidates.push_back(canonicalPlane(n, n.dot(r.corners[0])));
     kinds.push_back(r.kind);
   }
   for (const auto& b : gt.boxes) {

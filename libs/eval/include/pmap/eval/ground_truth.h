@@ -38,6 +38,9 @@ struct GtBox {
   Eigen::Vector3d max = Eigen::Vector3d::Zero();
   double yaw = 0;
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  /// p in the box's own frame (centre at the origin, no yaw), where the box
+  /// spans [min, max].
+  Eigen::Vector3d local(const Eigen::Vector3d& p) const;
 };
 
 /// A flush poster (texture only): corners bottom-left, bottom-right,
