@@ -241,7 +241,7 @@ A second cluttered world, glass and people walking through are not built
 yet. The peer benchmark (PCL, CGAL) is doc/peer-benchmark.md
 (\`scripts/peer-benchmark.sh\`). The cost of cloud mode against the
 number of points (0.25M to 5M) is in doc/cloud-scaling.md
-(\`scripts/cloud-scaling-report.sh\`): it is not linear yet. The voxel
+(\`scripts/cloud-scaling-report.sh\`), with spatial blocks (doc/em.md). The voxel
 mode (geb079) and \`sigma_m = auto\` are in doc/simulator.md and doc/em.md.
 EOM
 echo "wrote doc/real-geometry.md"

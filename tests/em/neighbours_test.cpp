@@ -137,6 +137,7 @@ TEST(NearestNeighbours, DenseCloudsMatchBruteForceToo) {
     pts.emplace_back(0.5 + u(rng), 0.5 + u(rng), u(rng));
   }
   expectBruteForce(pts, 0.2);
+  EXPECT_EQ(nearestNeighbours(pts, 0.2, 3), nearestNeighbours(pts, 0.2));  // any thread count
 }
 
 TEST(NearestNeighbours, TiesAreBrokenByIndex) {

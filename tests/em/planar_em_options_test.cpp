@@ -75,6 +75,11 @@ TEST(PlanarEmOptions, EachBadValueIsRejectedWithItsName) {
       {"coarse_points", [](auto& o) { o.coarse_points = 500; }},
       {"coarse_points", [](auto& o) { o.coarse_points = -1; }},
       {"fine_iterations", [](auto& o) { o.fine_iterations = 0; }},
+      {"block_points", [](auto& o) { o.block_points = 9999; }},
+      {"block_points", [](auto& o) { o.block_points = -1; }},
+      {"block_coarse_points", [](auto& o) { o.block_coarse_points = 500; }},
+      {"block_margin_m", [](auto& o) { o.block_margin_m = -0.1; }},
+      {"block_margin_m", [](auto& o) { o.block_margin_m = kNan; }},
       {"threads", [](auto& o) { o.threads = 0; }},
       {"threads", [](auto& o) { o.threads = 257; }},
   };

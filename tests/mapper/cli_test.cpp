@@ -178,5 +178,58 @@ TEST(MapperCli, AnEmStoppedByItsIterationCapIsAWarning) {
   EXPECT_EQ(warnings.find("max_iterations"), std::string::npos) << warnings;
 }
 
+// A cloud of more than 2 x block_points points is mapped in spatial blocks
+// (doc/em.md): summary.json says how many, and a block stopped by the
+// iteration cap is a warning that says which.
+TEST(MapperCli, ALargeCloudIsMappedInSpatialBlocks) {
+  const fs::path dir = testing::freshTestDir("cli_blocks");
+  {
+    std::ofstream ply(dir / "c.ply");
+    ply << "ply\nformat ascii 1.0\nelement vertex 28800\nproperty float x\nproperty float y\n"
+           "property float z\nend_header\n";
+    for (int i = 0; i < 960; ++i) {  // a 48 m corridor's floor and one wall, 5 cm apart
+      for (int j = 0; j < 20; ++j) {
+        ply << 0.05 * i << ' ' << 0.05 * j << " 0\n";
+      }
+      for (int j = 0; j < 10; ++j) {
+        ply << 0.05 * i << " 1 " << 0.05 * (j + 1) << '\n';
+      }
+    }
+    std::ifstream in(kDefaultIni);
+    std::string ini((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ini.replace(ini.find("@include icp.ini"), 16,
+                "@include " + (kDefaultIni.parent_path() / "icp.ini").string());
+    const auto withBlocks = [&](const std::string& extra) {
+      std::string s = ini;
+      s.replace(s.find("block_points = 200000"), 21, "block_points = 10000");
+      s.replace(s.find("[PlanarEM]\n"), 11, "[PlanarEM]\n" + extra);
+      return s;
+    };
+    std::ofstream(dir / "blocks.ini") << withBlocks("");
+    std::ofstream(dir / "cap.ini") << withBlocks("max_iterations = 1\n");
+  }
+  const auto summaryOf = [&](const std::string& ini) {
+    const fs::path out = dir / ("out-" + ini);
+    EXPECT_EQ(run({"--cloud", (dir / "c.ply").string(), "--config", (dir / ini).string(),
+                   "--no-textures", "--out", out.string(), "-q"}),
+              0);
+    std::ifstream in(out / "summary.json");
+    return nlohmann::json::parse(in);
+  };
+  const auto s = summaryOf("blocks.ini");
+  EXPECT_EQ(s["blocks"], 4);  // 28,800 -> 14,400 -> 7,200
+  EXPECT_EQ(s["blocks_unconverged"], 0);
+  EXPECT_EQ(s["termination"], "converged");
+  EXPECT_GT(s["explained_fraction"].get<double>(), 0.95);
+  const auto capped = summaryOf("cap.ini");
+  EXPECT_EQ(capped["termination"], "max_iterations");
+  EXPECT_EQ(capped["blocks_unconverged"], 4);
+  std::string all;
+  for (const auto& w : capped["warnings"]) {
+    all += w.get<std::string>() + "\n";
+  }
+  EXPECT_NE(all.find("max_iterations (1) in 4 of its 4 spatial blocks"), std::string::npos) << all;
+}
+
 }  // namespace
 }  // namespace pmap::mapper

@@ -58,6 +58,15 @@ ModelSelector::ModelSelector(const std::vector<Eigen::Vector3d>& points,
       not_planar_(points.size(), 0),
       rng_(options.seed) {}
 
+void expectAll(const std::vector<Eigen::Vector3d>& points, const std::vector<Surface>& surfaces,
+               const PlanarEmOptions& options, Responsibilities& resp) {
+  const MeasurementModel model(options.sigma_m, options.z_max_m);
+  const double cutoff = model.cutoffDistance(options.responsibility_tolerance);
+  const RectangleIndex index(surfaces, cutoff);
+  computeResponsibilities(points, surfaces, index, model, options.responsibility_tolerance,
+                          options.threads, resp);
+}
+
 void ModelSelector::expect(const std::vector<Surface>& surfaces, Responsibilities& resp) const {
   const RectangleIndex index(surfaces, cutoff_);
   computeResponsibilities(points_, surfaces, index, model_, options_.responsibility_tolerance,

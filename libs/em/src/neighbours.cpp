@@ -1,9 +1,11 @@
 #include "pmap/em/neighbours.h"
 
 #include <algorithm>
+#include <cmath>
+#include <thread>
 #include <unordered_map>
 
-#include "pmap/em/point_grid.h"
+#include "pmap/em/cell_key.h"
 
 namespace pmap::em {
 Neighbours gridNeighbours(const std::vector<GridKey>& keys) {
@@ -25,34 +27,190 @@ Neighbours gridNeighbours(const std::vector<GridKey>& keys) {
   return out;
 }
 
-Neighbours nearestNeighbours(const std::vector<Eigen::Vector3d>& points, double radius_m) {
-  // Dense clouds (a range camera's frame: hundreds of points within the
-  // radius) look within an eighth of it first: every point that close is
-  // listed, so when four are, they are the four nearest (ties included).
-  // Only points with fewer than four that close search the whole radius.
-  const double near_m = 0.125 * radius_m;
-  const PointGrid near_grid(points, near_m);
-  const PointGrid grid(points, radius_m);
+namespace {
+
+// The four smallest (squared distance, index) pairs seen, ascending; an
+// index seen twice (far cells hashed to one key, cell_key.h, or a point
+// offered by both grids) counts once.
+struct FourNearest {
+  std::array<std::pair<double, std::int32_t>, 4> best;
+  int count = 0;
+  void offer(double d2, std::int32_t j) {
+    const std::pair<double, std::int32_t> c(d2, j);
+    if (count == 4 && !(c < best[3])) {
+      return;
+    }
+    for (int m = 0; m < count; ++m) {
+      if (best[static_cast<std::size_t>(m)].second == j) {
+        return;
+      }
+    }
+    int at = count < 4 ? count++ : 3;
+    while (at > 0 && c < best[static_cast<std::size_t>(at - 1)]) {
+      best[static_cast<std::size_t>(at)] = best[static_cast<std::size_t>(at - 1)];
+      --at;
+    }
+    best[static_cast<std::size_t>(at)] = c;
+  }
+  bool full() const { return count == 4; }
+  double worst() const { return best[3].first; }
+};
+
+// The points sorted by cell, each occupied cell a range of that order.
+class CellIndex {
+ public:
+  CellIndex(const std::vector<Eigen::Vector3d>& points, double cell_m) : cell_(cell_m) {
+    order_.resize(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const Eigen::Matrix<std::int64_t, 3, 1> c = cellOf(points[i], cell_);
+      order_[i] = {cellKey(c.x(), c.y(), c.z()), static_cast<std::int32_t>(i)};
+    }
+    std::sort(order_.begin(), order_.end());
+    std::size_t cells = 0;
+    for (std::size_t k = 0; k < order_.size(); ++k) {
+      cells += k == 0 || order_[k].first != order_[k - 1].first ? 1 : 0;
+    }
+    // Open addressing, linear probing, at most half full.
+    std::size_t size = 16;
+    while (size < 2 * cells) {
+      size *= 2;
+    }
+    mask_ = size - 1;
+    slots_.assign(size, Slot{});
+    for (std::size_t k = 0; k < order_.size();) {
+      std::size_t e = k;
+      while (e < order_.size() && order_[e].first == order_[k].first) {
+        ++e;
+      }
+      std::size_t h = slotOf(order_[k].first);
+      while (slots_[h].end != 0) {
+        h = (h + 1) & mask_;
+      }
+      slots_[h] = {order_[k].first, static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(e)};
+      k = e;
+    }
+  }
+
+  // Scans the rings of cells around p's from `first` to `last` (the cells
+  // whose largest offset from p's cell is k, for k in [first, last]),
+  // offering the points within sqrt(r2) of p other than `self`; stops after
+  // a ring once the fourth nearest is closer than any point not yet scanned.
+  // Returns whether it stopped so (the answer is final).
+  bool scanRings(const std::vector<Eigen::Vector3d>& points, std::size_t self, double r2,
+                 std::int64_t first, std::int64_t last, FourNearest& near) const {
+    const Eigen::Vector3d& p = points[self];
+    const Eigen::Matrix<std::int64_t, 3, 1> c = cellOf(p, cell_);
+    const Eigen::Vector3d f = p / cell_ - c.cast<double>();  // in [0, 1] up to rounding
+    const auto scan = [&](std::int64_t dx, std::int64_t dy, std::int64_t dz) {
+      const Eigen::Vector3d lo(static_cast<double>(dx), static_cast<double>(dy),
+                               static_cast<double>(dz));
+      const double gap2 =
+          (lo - f).cwiseMax(f - (lo.array() + 1.0).matrix()).cwiseMax(0.0).squaredNorm() * cell_ *
+          cell_;
+      if (gap2 > r2 || (near.full() && gap2 > near.worst())) {
+        return;  // nothing in that cell can be a neighbour
+      }
+      const Slot* cell = find(cellKey(c.x() + dx, c.y() + dy, c.z() + dz));
+      if (cell == nullptr) {
+        return;
+      }
+      for (std::size_t k = cell->begin; k < cell->end; ++k) {
+        const std::int32_t j = order_[k].second;
+        const double d2 = (points[static_cast<std::size_t>(j)] - p).squaredNorm();
+        if (static_cast<std::size_t>(j) != self && d2 <= r2) {
+          near.offer(d2, j);
+        }
+      }
+    };
+    for (std::int64_t k = first; k <= last; ++k) {
+      for (std::int64_t dx = -k; dx <= k; ++dx) {
+        for (std::int64_t dy = -k; dy <= k; ++dy) {
+          const bool side = dx == -k || dx == k || dy == -k || dy == k;
+          for (std::int64_t dz = -k; dz <= k; dz += side ? 1 : 2 * k) {
+            scan(dx, dy, dz);
+          }
+        }
+      }
+      // Every point within `covered` of p is in the (2k + 1)^3 cells around c.
+      const double kd = static_cast<double>(k);
+      const double covered =
+          std::max(0.0, std::min((f.array() + kd).minCoeff(), (kd + 1.0 - f.array()).minCoeff())) *
+          cell_;
+      if (covered * covered >= r2 || (near.full() && near.worst() <= covered * covered)) {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  /// The points in cell order (neighbouring queries touch the same memory).
+  std::int32_t pointAt(std::size_t k) const { return order_[k].second; }
+
+ private:
+  struct Slot {
+    std::int64_t key = 0;
+    std::uint32_t begin = 0, end = 0;  ///< its points: order_[begin, end); end 0: empty slot
+  };
+  std::size_t slotOf(std::int64_t key) const {
+    return static_cast<std::size_t>((static_cast<std::uint64_t>(key) * 0x9E3779B97F4A7C15ull) >>
+                                    32) &
+           mask_;
+  }
+  const Slot* find(std::int64_t key) const {
+    for (std::size_t h = slotOf(key);; h = (h + 1) & mask_) {
+      const Slot& s = slots_[h];
+      if (s.end == 0) {
+        return nullptr;
+      }
+      if (s.key == key) {
+        return &s;
+      }
+    }
+  }
+
+  double cell_;
+  std::vector<std::pair<std::int64_t, std::int32_t>> order_;  ///< (cell key, point)
+  std::vector<Slot> slots_;
+  std::size_t mask_ = 0;
+};
+
+}  // namespace
+
+// Two grids: an eighth of the radius, where a dense cloud's (a range
+// camera's: hundreds of points within the radius) four nearest are found in
+// the first rings, and the radius itself, whose 27 cells around a point
+// hold everything within the radius, for sparse points. Each point scans
+// the fine grid's rings 0-2 nearest first, stopping once its fourth nearest
+// is closer than every point not yet scanned, else the coarse grid's 27
+// cells. Exactly the four nearest within the radius, ties by index.
+Neighbours nearestNeighbours(const std::vector<Eigen::Vector3d>& points, double radius_m,
+                             int threads) {
   Neighbours out(points.size(), {-1, -1, -1, -1});
-  std::vector<std::pair<double, std::int32_t>> cand;
-  const auto collect = [&](std::size_t i, const std::vector<std::int32_t>& found) {
-    cand.clear();
-    for (const std::int32_t j : found) {
-      if (j != static_cast<std::int32_t>(i)) {
-        cand.emplace_back((points[j] - points[i]).squaredNorm(), j);
+  const double r2 = radius_m * radius_m;
+  const CellIndex fine(points, 0.125 * radius_m);
+  const CellIndex coarse(points, radius_m);
+  // Each thread answers one stretch of the cell order: disjoint outputs.
+  const auto answer = [&](std::size_t first, std::size_t last) {
+    for (std::size_t k = first; k < last; ++k) {
+      const auto i = static_cast<std::size_t>(fine.pointAt(k));
+      FourNearest near;
+      if (!fine.scanRings(points, i, r2, 0, 2, near)) {
+        coarse.scanRings(points, i, r2, 0, 1, near);
+      }
+      for (int m = 0; m < near.count; ++m) {
+        out[i][static_cast<std::size_t>(m)] = near.best[static_cast<std::size_t>(m)].second;
       }
     }
   };
-  for (size_t i = 0; i < points.size(); ++i) {
-    collect(i, near_grid.within(points[i], near_m));
-    if (cand.size() < 4) {
-      collect(i, grid.within(points[i], radius_m));
-    }
-    const size_t k = std::min<size_t>(4, cand.size());
-    std::partial_sort(cand.begin(), cand.begin() + static_cast<std::ptrdiff_t>(k), cand.end());
-    for (size_t m = 0; m < k; ++m) {
-      out[i][m] = cand[m].second;
-    }
+  const std::size_t n = points.size();
+  const auto parts = static_cast<std::size_t>(std::clamp(threads, 1, 256));
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < parts; ++t) {
+    pool.emplace_back(answer, n * t / parts, n * (t + 1) / parts);
+  }
+  answer(0, n / parts);
+  for (std::thread& t : pool) {
+    t.join();
   }
   return out;
 }

@@ -1,9 +1,14 @@
 #include "pmap/em/offline_em.h"
 
+#include <atomic>
 #include <cassert>
 #include <cmath>
+#include <exception>
+#include <mutex>
+#include <thread>
 
 #include "pmap/em/model_selection.h"
+#include "pmap/em/spatial_blocks.h"
 #include "pmap/em/subsample.h"
 #include "pmap/em/surface_fit.h"
 
@@ -63,6 +68,12 @@ PlanarMap finalizeMap(const std::vector<Eigen::Vector3d>& points, const Neighbou
                       const PlanarEmOptions& options) {
   Responsibilities resp;
   selector.expect(surfaces, resp);
+  return finalizeMap(points, neighbours, std::move(surfaces), resp, options);
+}
+
+PlanarMap finalizeMap(const std::vector<Eigen::Vector3d>& points, const Neighbours& neighbours,
+                      std::vector<Surface> surfaces, const Responsibilities& resp,
+                      const PlanarEmOptions& options) {
   const auto members = hardMembers(resp, surfaces.size());
   PlanarMap map;
   map.assignment = resp.best;
@@ -80,12 +91,20 @@ PlanarMap finalizeMap(const std::vector<Eigen::Vector3d>& points, const Neighbou
   return map;
 }
 
+bool OfflineEm::inBlocks(std::size_t points) const {
+  const auto block = static_cast<std::size_t>(options_.block_points);
+  return block > 0 && points > 2 * block;
+}
+
 bool OfflineEm::coarseToFine(std::size_t points) const {
   const auto coarse = static_cast<std::size_t>(options_.coarse_points);
   return coarse > 0 && points > 2 * coarse;
 }
 
 int OfflineEm::iterationCap(std::size_t points) const {
+  if (inBlocks(points)) {
+    return static_cast<int>(blockCount(points, static_cast<std::size_t>(options_.block_points)));
+  }
   return options_.max_iterations + (coarseToFine(points) ? options_.fine_iterations : 0);
 }
 
@@ -96,6 +115,9 @@ EmResult OfflineEm::run(const std::vector<Eigen::Vector3d>& points, const Neighb
   if (points.empty()) {
     result.message = "no points";
     return result;
+  }
+  if (inBlocks(points.size()) && surfaces.empty()) {
+    return runInBlocks(points, neighbours, rows);
   }
   if (coarseToFine(points.size())) {
     // Model selection on a sample, then E- and M-steps on all points.
@@ -126,6 +148,99 @@ EmResult OfflineEm::run(const std::vector<Eigen::Vector3d>& points, const Neighb
   result.message = std::string(toString(result.termination)) + " after " +
                    std::to_string(result.iterations) + " iterations, " +
                    std::to_string(result.map.surfaces.size()) + " surfaces";
+  return result;
+}
+
+// Large inputs in spatial blocks (spatial_blocks.h): each block, with its
+// margin, is mapped on its own (coarse to fine with block_coarse_points);
+// a block keeps the surfaces that hold more of its own points than of its
+// margin's (the others belong to a neighbour, which maps them with their
+// own points). Then one E-step on all points gives the assignment and the
+// fine triangles. A surface cut by a seam ends as two overlapping,
+// coplanar pieces, which the refinement's fusion joins (surface_fusion.h).
+EmResult OfflineEm::runInBlocks(const std::vector<Eigen::Vector3d>& points,
+                                const Neighbours& neighbours,
+                                const std::vector<std::int32_t>& rows) const {
+  const std::vector<SpatialBlock> blocks = cutIntoBlocks(
+      points, static_cast<std::size_t>(options_.block_points), options_.block_margin_m);
+  PlanarEmOptions one = options_;
+  one.block_points = 0;
+  one.coarse_points = options_.block_coarse_points;
+  one.threads = 1;  // the blocks run side by side instead
+  std::vector<EmResult> done(blocks.size());
+  std::atomic<std::size_t> next{0};
+  std::mutex progress;  // the observer, `finished` and `failure`
+  std::size_t finished = 0;
+  std::exception_ptr failure;
+  const auto work = [&]() {
+    for (std::size_t b = next++; b < blocks.size(); b = next++) {
+      try {
+        const BlockInput in = blockInput(blocks[b], points, neighbours, rows);
+        done[b] = OfflineEm(one).run(in.points, in.neighbours, in.rows);
+      } catch (...) {  // rethrown on the caller's thread
+        const std::lock_guard<std::mutex> lock(progress);
+        failure = failure ? failure : std::current_exception();
+        next = blocks.size();
+        return;
+      }
+      const std::lock_guard<std::mutex> lock(progress);
+      if (observer_) {
+        IterationRecord rec = done[b].history.empty() ? IterationRecord{} : done[b].history.back();
+        rec.iteration = static_cast<int>(finished);
+        observer_(rec);
+      }
+      ++finished;
+    }
+  };
+  const int threads = std::min<int>(options_.threads, static_cast<int>(blocks.size()));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) {
+    pool.emplace_back(work);
+  }
+  work();
+  for (std::thread& t : pool) {
+    t.join();
+  }
+  if (failure) {
+    std::rethrow_exception(failure);
+  }
+  EmResult result;
+  result.termination = Termination::kConverged;
+  result.blocks = static_cast<int>(blocks.size());
+  std::vector<Surface> surfaces;
+  std::int32_t next_id = 0;
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    const EmResult& r = done[b];
+    result.iterations += r.iterations;
+    if (r.termination != Termination::kConverged) {
+      result.termination = r.termination;
+      ++result.blocks_unconverged;
+    }
+    if (!r.history.empty()) {
+      result.history.push_back(r.history.back());
+    }
+    std::vector<std::size_t> own(r.map.surfaces.size(), 0), all(r.map.surfaces.size(), 0);
+    for (std::size_t k = 0; k < r.map.assignment.size(); ++k) {
+      const std::int32_t j = r.map.assignment[k];
+      if (j >= 0) {
+        ++all[static_cast<std::size_t>(j)];
+        own[static_cast<std::size_t>(j)] += k < blocks[b].core ? 1 : 0;
+      }
+    }
+    for (std::size_t j = 0; j < r.map.surfaces.size(); ++j) {
+      if (2 * own[j] > all[j]) {
+        surfaces.push_back(r.map.surfaces[j]);
+        surfaces.back().id = next_id++;
+      }
+    }
+  }
+  Responsibilities resp;
+  expectAll(points, surfaces, options_, resp);
+  result.map = finalizeMap(points, neighbours, std::move(surfaces), resp, options_);
+  result.message = std::string(toString(result.termination)) + " in " +
+                   std::to_string(blocks.size()) + " blocks (" + std::to_string(result.iterations) +
+                   " iterations in all), " + std::to_string(result.map.surfaces.size()) +
+                   " surfaces";
   return result;
 }
 

@@ -77,6 +77,12 @@ bool PlanarEmOptions::validate(std::string* why) const {
     return fail(why, "coarse_points must be 0 (off) or >= 1000");
   if (fine_iterations < 1)
     return fail(why, "fine_iterations must be >= 1");
+  if (block_points != 0 && block_points < 10000)
+    return fail(why, "block_points must be 0 (off) or >= 10000");
+  if (block_coarse_points != 0 && block_coarse_points < 1000)
+    return fail(why, "block_coarse_points must be 0 (off) or >= 1000");
+  if (!(std::isfinite(block_margin_m) && block_margin_m >= 0.0))
+    return fail(why, "block_margin_m must be >= 0");
   if (threads < 1 || threads > 256)
     return fail(why, "threads must be in [1, 256]");
   return rules.validate(why);

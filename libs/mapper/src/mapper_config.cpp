@@ -177,6 +177,9 @@ void PlanarEmSection::load(config::SectionReader& r) {
   r.read("max_iterations", em.max_iterations);
   r.read("coarse_points", em.coarse_points);
   r.read("fine_iterations", em.fine_iterations);
+  r.read("block_points", em.block_points);
+  r.read("block_coarse_points", em.block_coarse_points);
+  r.read("block_margin_m", em.block_margin_m);
   r.read("convergence_tolerance", em.convergence_tolerance);
   r.read("convergence_patience", em.convergence_patience);
   r.read("convergence_absolute_nats", em.convergence_absolute_nats);

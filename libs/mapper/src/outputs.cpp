@@ -201,6 +201,10 @@ void addPlanarMap(const PlanarResult& planar, std::size_t raw_triangles, json& s
       planar.offline ? planar.offline->iterations : static_cast<int>(planar.online.size());
   s["iterations"] = iterations;
   s["termination"] = planar.offline ? em::toString(planar.offline->termination) : "online";
+  if (planar.offline && planar.offline->blocks > 0) {
+    s["blocks"] = planar.offline->blocks;
+    s["blocks_unconverged"] = planar.offline->blocks_unconverged;
+  }
   s["em_message"] = planar.message;
   s["ms_per_iteration"] =
       iterations > 0 ? 1000.0 * s["timing_s"]["em"].get<double>() / iterations : 0.0;

@@ -32,7 +32,8 @@ MappingResult runCloud(const MapperArgs& args, StageClock& clock) {
 }
 
 points::NeighbourGraph graphOf(const MapperConfig& config, const MappingResult& result) {
-  return points::neighbourGraph(result.points.map, config.planar_em.cloud_neighbour_radius_m);
+  return points::neighbourGraph(result.points.map, config.planar_em.cloud_neighbour_radius_m,
+                                config.planar_em.em.threads);
 }
 
 PlanarResult runOfflineEm(const MapperConfig& config, const MapperArgs& args,
@@ -52,7 +53,8 @@ PlanarResult runOfflineEm(const MapperConfig& config, const MapperArgs& args,
   PlanarResult planar;
   planar.map = std::move(r.map);
   planar.message = r.message;
-  planar.offline = OfflineRun{r.termination, r.iterations, std::move(r.history)};
+  planar.offline =
+      OfflineRun{r.termination, r.iterations, std::move(r.history), r.blocks, r.blocks_unconverged};
   return planar;
 }
 
@@ -204,12 +206,17 @@ void noteUnconverged(const MapperConfig& config, MappingResult& result) {
   char explained[32];
   std::snprintf(explained, sizeof explained, "%.1f %%",
                 100.0 * result.planar->map.explained_fraction);
+  const OfflineRun& run = *result.planar->offline;
+  const std::string where = run.blocks > 0 ? " in " + std::to_string(run.blocks_unconverged) +
+                                                 " of its " + std::to_string(run.blocks) +
+                                                 " spatial blocks before they converged"
+                                           : " before it converged";
   result.warnings.push_back(
       "the offline EM stopped at [PlanarEM] max_iterations (" +
-      std::to_string(config.planar_em.em.max_iterations) +
-      ") before it converged: its model selection may be unfinished (" + explained +
-      " explained); raise max_iterations, or set coarse_points for a large cloud "
-      "(doc/cloud-scaling.md)");
+      std::to_string(config.planar_em.em.max_iterations) + ")" + where +
+      ": its model selection may be unfinished (" + explained +
+      " explained); raise max_iterations, or set coarse_points, or block_points for a large "
+      "cloud (doc/cloud-scaling.md)");
 }
 
 void noteNothingFound(const MapperArgs& args, MappingResult& result) {

@@ -4,10 +4,10 @@
 
 namespace pmap::points {
 
-NeighbourGraph neighbourGraph(const PointMap& map, double cloud_radius_m) {
+NeighbourGraph neighbourGraph(const PointMap& map, double cloud_radius_m, int threads) {
   for (const ScanRecord& s : map.scans()) {
     if (!s.organised) {
-      return {em::nearestNeighbours(map.xyz(), cloud_radius_m), {}};
+      return {em::nearestNeighbours(map.xyz(), cloud_radius_m, threads), {}};
     }
   }
   std::vector<em::GridKey> keys;

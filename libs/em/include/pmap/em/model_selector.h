@@ -28,6 +28,12 @@ struct SelectionChanges {
   bool any() const { return removed + fused + split + added > 0; }
 };
 
+/// The E-step (eqs. 17-18) of `surfaces` over `points` under the measurement
+/// model of `options`: ModelSelector::expect without a selector's point grid
+/// (a final assignment over many points).
+void expectAll(const std::vector<Eigen::Vector3d>& points, const std::vector<Surface>& surfaces,
+               const PlanarEmOptions& options, Responsibilities& resp);
+
 class ModelSelector {
  public:
   /// `rows` (may be empty): each point's row (scan) for the min_rows test.

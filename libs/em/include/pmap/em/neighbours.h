@@ -42,7 +42,9 @@ struct GridKeyHash {
 Neighbours gridNeighbours(const std::vector<GridKey>& keys);
 
 /// The (up to) four nearest other points within `radius_m`, for clouds
-/// without grid structure. Deterministic (ties by index).
-Neighbours nearestNeighbours(const std::vector<Eigen::Vector3d>& points, double radius_m);
+/// without grid structure. Deterministic (ties by index), whatever the
+/// number of `threads` (>= 1) answering.
+Neighbours nearestNeighbours(const std::vector<Eigen::Vector3d>& points, double radius_m,
+                             int threads = 1);
 
 }  // namespace pmap::em

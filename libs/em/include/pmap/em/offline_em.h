@@ -45,8 +45,11 @@ struct EmResult {
   PlanarMap map;
   Termination termination = Termination::kNoPoints;
   int iterations = 0;
+  /// In spatial blocks: each block's last record, in block order.
   std::vector<IterationRecord> history;
   std::string message;
+  int blocks = 0;              ///< spatial blocks mapped (0: one run on all points)
+  int blocks_unconverged = 0;  ///< ... of which stopped at max_iterations
 };
 
 class OfflineEm {
@@ -59,11 +62,14 @@ class OfflineEm {
   /// options.threads is. More than 2 x coarse_points points: coarse to fine
   /// (model selection on a sample, planar_em_options.h).
   /// `rows` (may be empty): each point's row (scan), for the min_rows test.
+  /// More than 2 x block_points points and no `initial` surfaces: in
+  /// spatial blocks (spatial_blocks.h).
   EmResult run(const std::vector<Eigen::Vector3d>& points, const Neighbours& neighbours,
                const std::vector<std::int32_t>& rows, std::vector<Surface> initial = {}) const;
 
   /// Most iterations a run on `points` points makes: max_iterations, plus
-  /// fine_iterations coarse to fine.
+  /// fine_iterations coarse to fine; in blocks, the number of blocks (the
+  /// observer is called once per block mapped, from the thread that mapped it).
   int iterationCap(std::size_t points) const;
 
   /// Called after every iteration's E-step (progress lines); no effect on the map.
@@ -72,7 +78,10 @@ class OfflineEm {
   }
 
  private:
+  bool inBlocks(std::size_t points) const;
   bool coarseToFine(std::size_t points) const;
+  EmResult runInBlocks(const std::vector<Eigen::Vector3d>& points, const Neighbours& neighbours,
+                       const std::vector<std::int32_t>& rows) const;
   /// EM iterations on `points` (those of `selector`) until converged or
   /// max_iterations, appended to `result` (iterations, history,
   /// termination); with `with_selection`, a model-selection round every
@@ -88,6 +97,10 @@ class OfflineEm {
 /// The final assignment, explained fraction and fine triangles of `surfaces`.
 PlanarMap finalizeMap(const std::vector<Eigen::Vector3d>& points, const Neighbours& neighbours,
                       std::vector<Surface> surfaces, const ModelSelector& selector,
+                      const PlanarEmOptions& options);
+/// ... from their responsibilities `resp` over `points`, computed already.
+PlanarMap finalizeMap(const std::vector<Eigen::Vector3d>& points, const Neighbours& neighbours,
+                      std::vector<Surface> surfaces, const Responsibilities& resp,
                       const PlanarEmOptions& options);
 
 }  // namespace pmap::em

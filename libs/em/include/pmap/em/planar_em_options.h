@@ -136,6 +136,21 @@ struct PlanarEmOptions {
   /// moving by degrees over 80 more iterations while the explained share
   /// changed by 0.2 % (doc/real-geometry.md).
   int fine_iterations = 5;
+  /// Spatial blocks (offline_em.h, spatial_blocks.h), 0 or >= 10000: an
+  /// input of more than twice this many points is cut into blocks of at
+  /// most this many (median cuts along the longer horizontal side), each
+  /// mapped on its own with the points within block_margin_m of it, so
+  /// that the work grows with the points, not with points x surfaces.
+  /// 0: one block (the default). coarse_points applies to a run in one
+  /// block; blocks use block_coarse_points instead.
+  int block_points = 0;
+  /// Each block's coarse_points, 0 or >= 1000: a sample of the same size in
+  /// every block keeps its density whatever the building's size (one
+  /// sample of a whole 5M-point building is one point in fifty).
+  int block_coarse_points = 0;
+  /// A block's margin (m), >= 0: how far past its seams a block sees, so
+  /// that a surface cut by a seam is fitted on both sides of it.
+  double block_margin_m = 1.0;
   bool bounded = true;          ///< false: unbounded planes (property tests)
   bool model_selection = true;  ///< false: J fixed to the initial surfaces
   /// Longest edge of a fine triangle (m), > 0: a few beam spacings, so

@@ -110,6 +110,8 @@ struct OfflineRun {
   em::Termination termination = em::Termination::kNoPoints;
   int iterations = 0;
   std::vector<em::IterationRecord> history;
+  int blocks = 0;  ///< spatial blocks (em::EmResult)
+  int blocks_unconverged = 0;
 };
 
 /// The planar map and how it was made.

@@ -16,6 +16,6 @@ struct NeighbourGraph {
   std::vector<std::int32_t> rows;
 };
 
-NeighbourGraph neighbourGraph(const PointMap& map, double cloud_radius_m);
+NeighbourGraph neighbourGraph(const PointMap& map, double cloud_radius_m, int threads = 1);
 
 }  // namespace pmap::points
