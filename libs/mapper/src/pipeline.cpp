@@ -41,9 +41,11 @@ PlanarResult runOfflineEm(const MapperConfig& config, const MapperArgs& args,
   ProgressLine progress("planar-mapper: EM", ProgressOptions{!args.quiet, 1.0, false});
   em::OfflineEm em(config.planar_em.em);
   const int max_iterations = em.iterationCap(map.size());
+  const bool in_blocks = em.inBlocks(map.size());  // one line per block mapped
   em.setObserver([&](const em::IterationRecord& rec) {
     char detail[96];
-    std::snprintf(detail, sizeof detail, "%d surfaces, %.1f %% explained", rec.surfaces,
+    std::snprintf(detail, sizeof detail, "%s%d surfaces, %.1f %% explained",
+                  in_blocks ? "blocks; the last: " : "", rec.surfaces,
                   100.0 * rec.explained_fraction);
     progress.update(static_cast<std::uint64_t>(rec.iteration + 1),
                     static_cast<std::uint64_t>(max_iterations), detail);

@@ -72,13 +72,16 @@ class OfflineEm {
   /// observer is called once per block mapped, from the thread that mapped it).
   int iterationCap(std::size_t points) const;
 
+  /// Whether a run on `points` points (and no initial surfaces) is in
+  /// spatial blocks.
+  bool inBlocks(std::size_t points) const;
+
   /// Called after every iteration's E-step (progress lines); no effect on the map.
   void setObserver(std::function<void(const IterationRecord&)> observer) {
     observer_ = std::move(observer);
   }
 
  private:
-  bool inBlocks(std::size_t points) const;
   bool coarseToFine(std::size_t points) const;
   EmResult runInBlocks(const std::vector<Eigen::Vector3d>& points, const Neighbours& neighbours,
                        const std::vector<std::int32_t>& rows) const;
