@@ -68,9 +68,7 @@ void expectAll(const std::vector<Eigen::Vector3d>& points, const std::vector<Sur
 }
 
 void ModelSelector::expect(const std::vector<Surface>& surfaces, Responsibilities& resp) const {
-  const RectangleIndex index(surfaces, cutoff_);
-  computeResponsibilities(points_, surfaces, index, model_, options_.responsibility_tolerance,
-                          options_.threads, resp);
+  expectAll(points_, surfaces, options_, resp);
 }
 
 double ModelSelector::empty(const std::vector<std::int32_t>& members, const Rectangle& rect) const {

@@ -91,13 +91,13 @@ class CellIndex {
     }
   }
 
-  // Scans the rings of cells around p's from `first` to `last` (the cells
-  // whose largest offset from p's cell is k, for k in [first, last]),
+  // Scans the rings of cells around p's, nearest first, up to ring `last`
+  // (ring k: the cells whose largest offset from p's cell is k),
   // offering the points within sqrt(r2) of p other than `self`; stops after
   // a ring once the fourth nearest is closer than any point not yet scanned.
   // Returns whether it stopped so (the answer is final).
   bool scanRings(const std::vector<Eigen::Vector3d>& points, std::size_t self, double r2,
-                 std::int64_t first, std::int64_t last, FourNearest& near) const {
+                 std::int64_t last, FourNearest& near) const {
     const Eigen::Vector3d& p = points[self];
     const Eigen::Matrix<std::int64_t, 3, 1> c = cellOf(p, cell_);
     const Eigen::Vector3d f = p / cell_ - c.cast<double>();  // in [0, 1] up to rounding
@@ -122,7 +122,7 @@ class CellIndex {
         }
       }
     };
-    for (std::int64_t k = first; k <= last; ++k) {
+    for (std::int64_t k = 0; k <= last; ++k) {
       for (std::int64_t dx = -k; dx <= k; ++dx) {
         for (std::int64_t dy = -k; dy <= k; ++dy) {
           const bool side = dx == -k || dx == k || dy == -k || dy == k;
@@ -194,8 +194,8 @@ Neighbours nearestNeighbours(const std::vector<Eigen::Vector3d>& points, double 
     for (std::size_t k = first; k < last; ++k) {
       const auto i = static_cast<std::size_t>(fine.pointAt(k));
       FourNearest near;
-      if (!fine.scanRings(points, i, r2, 0, 2, near)) {
-        coarse.scanRings(points, i, r2, 0, 1, near);
+      if (!fine.scanRings(points, i, r2, 2, near)) {
+        coarse.scanRings(points, i, r2, 1, near);
       }
       for (int m = 0; m < near.count; ++m) {
         out[i][static_cast<std::size_t>(m)] = near.best[static_cast<std::size_t>(m)].second;
