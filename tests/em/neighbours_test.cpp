@@ -140,6 +140,28 @@ TEST(NearestNeighbours, DenseCloudsMatchBruteForceToo) {
   EXPECT_EQ(nearestNeighbours(pts, 0.2, 3), nearestNeighbours(pts, 0.2));  // any thread count
 }
 
+// A 2D laser's sweep through a corridor: points 1 cm apart along scan
+// lines 8 cm apart, so the fourth nearest is 2 cm away and the fine grid's
+// cell is the widest (half the radius); a sparse stretch of lines 20 cm
+// apart, whose points find only their line within the radius; and a dense
+// patch whose points all lie in one fine cell. Same answer as brute force.
+TEST(NearestNeighbours, SweepLikeCloudsOfMixedDensityMatchBruteForce) {
+  std::mt19937_64 rng(29);
+  std::normal_distribution<double> noise(0.0, 0.002);
+  std::vector<Eigen::Vector3d> pts;
+  for (int line = 0; line < 12; ++line) {
+    const double x = line < 8 ? 0.08 * line : 0.64 + 0.2 * (line - 7);
+    for (int k = 0; k < 150; ++k) {
+      pts.emplace_back(x + noise(rng), 1.0 + noise(rng), 0.01 * k);
+    }
+  }
+  for (int k = 0; k < 60; ++k) {
+    pts.emplace_back(0.3 + 0.1 * noise(rng), 0.9 + 0.1 * noise(rng), 0.7 + 0.1 * noise(rng));
+  }
+  expectBruteForce(pts, 0.15);
+  EXPECT_EQ(nearestNeighbours(pts, 0.15, 2), nearestNeighbours(pts, 0.15));
+}
+
 TEST(NearestNeighbours, TiesAreBrokenByIndex) {
   // Four points at distance 1 from the centre and one more at distance 1.
   const std::vector<Eigen::Vector3d> pts = {{0, 0, 0}, {0, 0, 1},  {1, 0, 0},

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <utility>
 
 #include "pmap/em/cell_key.h"
@@ -131,12 +132,23 @@ std::vector<std::int32_t> pointsNear(const PointGrid& grid,
   return out;
 }
 
+// Sorted lists (members, pointsNear) are merged, O(total); others sorted first.
 std::vector<std::int32_t> unionOf(const std::vector<std::vector<std::int32_t>>& lists) {
   std::vector<std::int32_t> out;
+  std::vector<std::int32_t> merged;
+  std::vector<std::int32_t> sorted;
   for (const auto& l : lists) {
-    out.insert(out.end(), l.begin(), l.end());
+    const std::vector<std::int32_t>* next = &l;
+    if (!std::is_sorted(l.begin(), l.end())) {
+      sorted = l;
+      std::sort(sorted.begin(), sorted.end());
+      next = &sorted;
+    }
+    merged.clear();
+    merged.reserve(out.size() + next->size());
+    std::set_union(out.begin(), out.end(), next->begin(), next->end(), std::back_inserter(merged));
+    out.swap(merged);
   }
-  std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }

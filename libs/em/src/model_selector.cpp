@@ -141,16 +141,31 @@ int ModelSelector::removeSurfaces(std::vector<Surface>& surfaces, Responsibiliti
   return removed;
 }
 
-double ModelSelector::pairLikelihoodChange(const std::vector<Surface>& surfaces,
-                                           const Responsibilities& resp, std::size_t j,
-                                           std::size_t k,
+const std::vector<std::int32_t>& ModelSelector::nearOf(PassCache& cache, std::size_t j) const {
+  if (!cache.near_known[j]) {
+    cache.near[j] = pointsNear(grid_, points_, cache.surfaces[j].rect, cutoff_);
+    cache.near_known[j] = 1;
+  }
+  return cache.near[j];
+}
+
+double ModelSelector::emptyOf(PassCache& cache, std::size_t j) const {
+  if (!cache.empty_known[j]) {
+    cache.empty[j] = empty(cache.members[j], cache.surfaces[j].rect);
+    cache.empty_known[j] = 1;
+  }
+  return cache.empty[j];
+}
+
+double ModelSelector::pairLikelihoodChange(PassCache& cache, const Responsibilities& resp,
+                                           std::size_t j, std::size_t k,
                                            const std::vector<Rectangle>& rects) const {
-  std::vector<std::vector<std::int32_t>> near = {
-      pointsNear(grid_, points_, surfaces[j].rect, cutoff_),
-      pointsNear(grid_, points_, surfaces[k].rect, cutoff_)};
+  std::vector<std::vector<std::int32_t>> near;
   for (const Rectangle& r : rects) {
     near.push_back(pointsNear(grid_, points_, r, cutoff_));
   }
+  near.push_back(nearOf(cache, j));
+  near.push_back(nearOf(cache, k));
   return logLikelihoodChange(points_, resp, model_, unionOf(near),
                              {static_cast<std::int32_t>(j), static_cast<std::int32_t>(k)}, rects,
                              options_.responsibility_tolerance, options_.selection_scoring);
@@ -161,9 +176,12 @@ double ModelSelector::pairLikelihoodChange(const std::vector<Surface>& surfaces,
 // sameSurfacePlace), or else their re-cut: coplanar neighbours forming an L are cut
 // again where the larger rectangle is largest (a canonical form: a wall or
 // ceiling runs through the corner), when that costs less than min_gain.
-std::optional<ModelSelector::PairChange> ModelSelector::pairChange(
-    const std::vector<Surface>& surfaces, const std::vector<std::vector<std::int32_t>>& members,
-    const Responsibilities& resp, std::size_t j, std::size_t k) const {
+std::optional<ModelSelector::PairChange> ModelSelector::pairChange(PassCache& cache,
+                                                                   const Responsibilities& resp,
+                                                                   std::size_t j,
+                                                                   std::size_t k) const {
+  const std::vector<Surface>& surfaces = cache.surfaces;
+  const std::vector<std::vector<std::int32_t>>& members = cache.members;
   const Rectangle& a = surfaces[j].rect;
   const Rectangle& b = surfaces[k].rect;
   if (!fusionPartners(a, b, options_)) {
@@ -175,8 +193,8 @@ std::optional<ModelSelector::PairChange> ModelSelector::pairChange(
                        static_cast<std::size_t>(options_.min_support))) {
     return std::nullopt;
   }
-  const double empty_before = empty(members[j], a) + empty(members[k], b);
-  const double fuse_gain = posteriorGain(pairLikelihoodChange(surfaces, resp, j, k, {m}), -1,
+  const double empty_before = emptyOf(cache, j) + emptyOf(cache, k);
+  const double fuse_gain = posteriorGain(pairLikelihoodChange(cache, resp, j, k, {m}), -1,
                                          empty(both, m) - empty_before, options_);
   if (raisesPosterior(fuse_gain, options_) ||
       sameSurfacePlace(a, b, options_.split_min_offset_m, options_)) {
@@ -188,7 +206,7 @@ std::optional<ModelSelector::PairChange> ModelSelector::pairChange(
   }
   const double empty_after =
       empty(recut->parts.part_a, recut->rects[0]) + empty(recut->parts.part_b, recut->rects[1]);
-  const double gain = posteriorGain(pairLikelihoodChange(surfaces, resp, j, k, recut->rects), 0,
+  const double gain = posteriorGain(pairLikelihoodChange(cache, resp, j, k, recut->rects), 0,
                                     empty_after - empty_before, options_);
   if (!recutAffordable(gain, options_)) {
     return std::nullopt;
@@ -235,10 +253,11 @@ int ModelSelector::fuseSurfaces(std::vector<Surface>& surfaces, Responsibilities
                                 std::int32_t& next_id) {
   const std::size_t J = surfaces.size();
   const auto members = hardMembers(resp, J);
+  PassCache cache(surfaces, members);
   std::vector<PairChange> changes;
   for (std::size_t j = 0; j < J; ++j) {
     for (std::size_t k = j + 1; k < J; ++k) {
-      if (auto c = pairChange(surfaces, members, resp, j, k)) {
+      if (auto c = pairChange(cache, resp, j, k)) {
         changes.push_back(std::move(*c));
       }
     }
@@ -478,10 +497,18 @@ int ModelSelector::prune(std::vector<Surface>& surfaces) {
   return removeSurfaces(surfaces, resp);
 }
 
-int ModelSelector::fuse(std::vector<Surface>& surfaces, std::int32_t& next_id) {
-  Responsibilities resp;
+int ModelSelector::fuse(std::vector<Surface>& surfaces, std::int32_t& next_id, int passes,
+                        Responsibilities& resp) {
   expect(surfaces, resp);
-  return fuseSurfaces(surfaces, resp, next_id);
+  int changed = 0;
+  for (int pass = 0; pass < passes; ++pass) {
+    const int n = fuseSurfaces(surfaces, resp, next_id);  // the E-step again when n > 0
+    changed += n;
+    if (n == 0) {
+      break;
+    }
+  }
+  return changed;
 }
 
 bool ModelSelector::placeTaken(const std::vector<Rectangle>& parts,

@@ -55,18 +55,13 @@ FusionResult fuseSurfaces(const std::vector<Eigen::Vector3d>& points,
   }
   std::vector<em::Surface> surfaces = map.surfaces;
   const std::set<std::int32_t> before = idsOf(surfaces);
-  for (int pass = 0; pass < kMaxPasses; ++pass) {
-    const int changed = selector.fuse(surfaces, next_id);
-    result.changed_pairs += changed;
-    if (changed == 0) {
-      break;
-    }
-  }
+  em::Responsibilities resp;
+  result.changed_pairs = selector.fuse(surfaces, next_id, kMaxPasses, resp);
   if (result.changed_pairs > 0) {
     const std::set<std::int32_t> after = idsOf(surfaces);
     result.replaced_ids = missingFrom(before, after);
     result.new_ids = missingFrom(after, before);
-    map = em::finalizeMap(points, neighbours, std::move(surfaces), selector, o);
+    map = em::finalizeMap(points, neighbours, std::move(surfaces), resp, o);
   }
   return result;
 }

@@ -47,10 +47,12 @@ class ModelSelector {
   /// posterior (the removal step of a round alone); returns how many.
   int prune(std::vector<Surface>& surfaces);
 
-  /// The fusion step of a round alone (E-step, then fuse or re-cut pairs of
-  /// coplanar neighbours when that raises the log posterior); returns how
-  /// many pairs changed.
-  int fuse(std::vector<Surface>& surfaces, std::int32_t& next_id);
+  /// The fusion step of a round alone, up to `passes` times while pairs
+  /// change (E-step, then fuse or re-cut pairs of coplanar neighbours when
+  /// that raises the log posterior); returns how many pairs changed, with
+  /// `resp` the E-step of the final `surfaces`.
+  int fuse(std::vector<Surface>& surfaces, std::int32_t& next_id, int passes,
+           Responsibilities& resp);
 
   /// E-step on `surfaces` with this selector's index settings.
   void expect(const std::vector<Surface>& surfaces, Responsibilities& resp) const;
@@ -72,16 +74,31 @@ class ModelSelector {
     std::size_t j, k;
     std::vector<Rectangle> replacement;  ///< one rectangle (fusion) or two (re-cut)
   };
+  /// What the pairs of one fusion pass share: each surface's points within
+  /// the cutoff and its members' empty area, computed on first use.
+  struct PassCache {
+    const std::vector<Surface>& surfaces;
+    const std::vector<std::vector<std::int32_t>>& members;
+    std::vector<std::vector<std::int32_t>> near;
+    std::vector<double> empty;
+    std::vector<char> near_known, empty_known;
+    PassCache(const std::vector<Surface>& s, const std::vector<std::vector<std::int32_t>>& m)
+        : surfaces(s),
+          members(m),
+          near(s.size()),
+          empty(s.size(), 0.0),
+          near_known(s.size(), 0),
+          empty_known(s.size(), 0) {}
+  };
+  const std::vector<std::int32_t>& nearOf(PassCache& cache, std::size_t j) const;
+  double emptyOf(PassCache& cache, std::size_t j) const;
   /// The fusion or re-cut of surfaces j and k, when it is to be made.
-  std::optional<PairChange> pairChange(const std::vector<Surface>& surfaces,
-                                       const std::vector<std::vector<std::int32_t>>& members,
-                                       const Responsibilities& resp, std::size_t j,
-                                       std::size_t k) const;
+  std::optional<PairChange> pairChange(PassCache& cache, const Responsibilities& resp,
+                                       std::size_t j, std::size_t k) const;
   /// Log-likelihood change (eq. 30's first term) of replacing surfaces j
   /// and k by `rects`.
-  double pairLikelihoodChange(const std::vector<Surface>& surfaces, const Responsibilities& resp,
-                              std::size_t j, std::size_t k,
-                              const std::vector<Rectangle>& rects) const;
+  double pairLikelihoodChange(PassCache& cache, const Responsibilities& resp, std::size_t j,
+                              std::size_t k, const std::vector<Rectangle>& rects) const;
   /// Makes the non-overlapping `changes` (best first); returns how many.
   int applyPairChanges(std::vector<PairChange> changes, std::vector<Surface>& surfaces,
                        std::int32_t& next_id) const;
