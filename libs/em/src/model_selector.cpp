@@ -142,19 +142,17 @@ int ModelSelector::removeSurfaces(std::vector<Surface>& surfaces, Responsibiliti
 }
 
 const std::vector<std::int32_t>& ModelSelector::nearOf(PassCache& cache, std::size_t j) const {
-  if (!cache.near_known[j]) {
+  if (!cache.near[j]) {
     cache.near[j] = pointsNear(grid_, points_, cache.surfaces[j].rect, cutoff_);
-    cache.near_known[j] = 1;
   }
-  return cache.near[j];
+  return *cache.near[j];
 }
 
 double ModelSelector::emptyOf(PassCache& cache, std::size_t j) const {
-  if (!cache.empty_known[j]) {
+  if (!cache.empty[j]) {
     cache.empty[j] = empty(cache.members[j], cache.surfaces[j].rect);
-    cache.empty_known[j] = 1;
   }
-  return cache.empty[j];
+  return *cache.empty[j];
 }
 
 double ModelSelector::pairLikelihoodChange(PassCache& cache, const Responsibilities& resp,

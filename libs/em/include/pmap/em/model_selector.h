@@ -79,16 +79,10 @@ class ModelSelector {
   struct PassCache {
     const std::vector<Surface>& surfaces;
     const std::vector<std::vector<std::int32_t>>& members;
-    std::vector<std::vector<std::int32_t>> near;
-    std::vector<double> empty;
-    std::vector<char> near_known, empty_known;
+    std::vector<std::optional<std::vector<std::int32_t>>> near;
+    std::vector<std::optional<double>> empty;
     PassCache(const std::vector<Surface>& s, const std::vector<std::vector<std::int32_t>>& m)
-        : surfaces(s),
-          members(m),
-          near(s.size()),
-          empty(s.size(), 0.0),
-          near_known(s.size(), 0),
-          empty_known(s.size(), 0) {}
+        : surfaces(s), members(m), near(s.size()), empty(s.size()) {}
   };
   const std::vector<std::int32_t>& nearOf(PassCache& cache, std::size_t j) const;
   double emptyOf(PassCache& cache, std::size_t j) const;
