@@ -156,6 +156,36 @@ TEST(ScanMatcher, Item15_TheRunnerUpTellsAnAmbiguousPlaceFromAUniqueOne) {
   EXPECT_FALSE(room_matcher.anyOutside(room_query, around_room, near, 0.9 * room_best.score));
 }
 
+// anyOutside() looks at the excluded poses' angles first and stops at the
+// first pose above the threshold: whatever the order, it says
+// yes exactly when matchOutside() finds a pose, i.e. when the best pose
+// outside the excluded ones scores strictly more than the threshold.
+TEST(ScanMatcher, Item15_AnyOutsideAgreesWithTheFullSearch) {
+  const auto world = room(8.0, 5.0, true);
+  const ScanMatcher matcher(world, ScanMatchOptions{});
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 12; ++trial) {
+    const Pose2 truth{4.0 + 1.5 * u(rng), 2.5 + u(rng), 0.5 * u(rng)};
+    const auto query = seenFrom(world, truth, 0.01, static_cast<unsigned>(trial));
+    MatchWindow window;
+    window.guess = {truth.x + 0.5 * u(rng), truth.y + 0.5 * u(rng), truth.theta + 0.1 * u(rng)};
+    window.linear_m = 1.2;
+    window.angular_deg = 12.0;
+    MatchWindow excluded;  // around the truth, or anywhere in the window
+    excluded.guess = trial % 2 == 0 ? truth
+                                    : Pose2{window.guess.x + u(rng), window.guess.y + u(rng),
+                                            window.guess.theta + 0.2 * u(rng)};
+    excluded.linear_m = 0.3 + 0.3 * (1.0 + u(rng));
+    excluded.angular_deg = 5.0;
+    const ScanMatch outside = matcher.matchOutside(query, window, excluded, 0.0);
+    ASSERT_TRUE(outside.found) << "trial " << trial;
+    EXPECT_TRUE(matcher.anyOutside(query, window, excluded, outside.score - 1e-9))
+        << "trial " << trial;
+    EXPECT_FALSE(matcher.anyOutside(query, window, excluded, outside.score)) << "trial " << trial;
+  }
+}
+
 // A corridor is ambiguous along its axis only: with the line through the
 // best pose along the axis left out, nothing else scores nearly as well;
 // with a line across it, or with a twin corridor beside it, something does.

