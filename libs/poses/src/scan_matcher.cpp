@@ -277,10 +277,10 @@ ScanMatch ScanMatcher::search(const std::vector<Eigen::Vector2d>& query_in,
   }
   const int top = options_.levels - 1;
   bnb.cells.resize(static_cast<std::size_t>(2 * n_angles + 1));
-  const auto roots = [&](int a) {  // the top-level blocks of angle index a
+  // The top-level blocks of angle index a, appended to `out`.
+  const auto add_roots = [&](int a, std::vector<Search::Block>& out) {
     bnb.cells[static_cast<std::size_t>(a)] =
         cellsAt(query, window.guess.theta + (a - n_angles) * step, corner, res);
-    std::vector<Search::Block> out;
     for (int y = 0; y < bnb.width; y += 1 << top) {
       for (int x = 0; x < bnb.width; x += 1 << top) {
         Search::Block b{0, a, x, y, top};
@@ -288,29 +288,29 @@ ScanMatch ScanMatcher::search(const std::vector<Eigen::Vector2d>& query_in,
         out.push_back(b);
       }
     }
-    return out;
   };
   // Any pose above min_score will do for anyOutside(): the angles of the
   // excluded heading first, one at a time (a corridor's runner-up lies
   // there, found before the bounds of every angle's blocks are made), then
   // the rest best first. The full search (match) goes best first at once.
-  std::vector<bool> done(static_cast<std::size_t>(2 * n_angles + 1), false);
+  int first_a0 = 0, first_a1 = -1;  // the angles searched one at a time
   if (first_only && excluded.linear_m >= 0.0) {
-    for (int a = std::max(bnb.ex_a0, 0); a <= std::min(bnb.ex_a1, 2 * n_angles) && !bnb.found;
-         ++a) {
-      bnb.descend(roots(a));
-      done[static_cast<std::size_t>(a)] = true;
+    first_a0 = std::max(bnb.ex_a0, 0);
+    first_a1 = std::min(bnb.ex_a1, 2 * n_angles);
+    for (int a = first_a0; a <= first_a1 && !bnb.found; ++a) {
+      std::vector<Search::Block> roots;
+      add_roots(a, roots);
+      bnb.descend(std::move(roots));
     }
   }
   if (!bnb.found) {
-    std::vector<Search::Block> all;
+    std::vector<Search::Block> roots;
     for (int a = 0; a <= 2 * n_angles; ++a) {
-      if (!done[static_cast<std::size_t>(a)]) {
-        const std::vector<Search::Block> r = roots(a);
-        all.insert(all.end(), r.begin(), r.end());
+      if (a < first_a0 || a > first_a1) {
+        add_roots(a, roots);
       }
     }
-    bnb.descend(std::move(all));
+    bnb.descend(std::move(roots));
   }
   if (!bnb.found) {
     return ScanMatch{};
