@@ -57,9 +57,12 @@ sed -e "s/^threads = 1 *$/threads = 2/" -e "s#^@include icp.ini#@include $PWD/co
   config/default.ini > "$work/two-threads.ini"
 grep -q "^threads = 2" "$work/two-threads.ini"
 
-# run INI N: one line "wall_s rss_mb em_s explained surfaces fine progress status"
-# (wall_s "stopped" and the rest "-" when stopped at the cap; progress: the
-# number of the EM's progress lines on stderr).
+# run INI N: one line "wall_s rss_mb em_s explained surfaces fine progress
+# matched eligible gt_to_map_mm map_to_gt_mm status" (wall_s "stopped" and the
+# rest "-" when stopped at the cap; progress: the number of the EM's progress
+# lines on stderr; matched / eligible: map-eval's ground-truth surfaces
+# matched, the map scored as it stands with its points labelled by the
+# nearest object, doc/evaluation.md; the planar map's mean errors both ways).
 run() {
   local out="$work/out-$(basename "$1" .ini)-$2" status=0
   /usr/bin/time -f '%e %M' -o "$out.time" timeout "$cap" "$bin/planar-mapper" --config "$1" \
@@ -68,11 +71,13 @@ run() {
   progress=$(grep -c 'EM: [0-9]' "$out.err") || true
   read -r wall rss < <(tail -n 1 "$out.time")
   if [ "$status" -ne 0 ]; then
-    echo "stopped $((rss / 1024)) - - - - $progress $status"
+    echo "stopped $((rss / 1024)) - - - - $progress - - - - $status"
     return
   fi
+  "$bin/map-eval" --map "$out" --gt "$work/dense.gt.json" --out "$out/eval.json" -q
   echo "$wall $((rss / 1024)) $(json "$out/summary.json" \
-    "'%.1f %.1f %d %d' % (d['timing_s']['em'], 100 * d['explained_fraction'], d['surfaces'], d.get('fine_triangles', 0))") $progress 0"
+    "'%.1f %.1f %d %d' % (d['timing_s']['em'], 100 * d['explained_fraction'], d['surfaces'], d.get('fine_triangles', 0))") $progress $(json "$out/eval.json" \
+    "'%d %d %.1f %.0f' % (d['matched_surfaces'], d['gt_surfaces'], 1000 * d['planar_map']['mean_error_m'], 1000 * d['planar_map']['map_to_gt_mean_error_m'])") 0"
 }
 
 rows=""
@@ -114,16 +119,28 @@ print()
 names = {"default": "default.ini", "whole": "block_points = 0",
          "coarse": "block_points = 0, coarse_points = %s" % coarse,
          "two-threads": "default.ini, threads = 2"}
-print("| points | config | wall (s) | peak memory (MB) | EM (s) | explained | surfaces | fine triangles | EM progress lines |")
-print("|---|---|---|---|---|---|---|---|---|")
-for n, ini, wall, rss, em, expl, surf, fine, prog, status in rows:
+print("| points | config | wall (s) | peak memory (MB) | EM (s) | explained | surfaces | fine triangles | EM progress lines | surfaces matched | error gt to map / map to gt (mm) |")
+print("|---|---|---|---|---|---|---|---|---|---|---|")
+for n, ini, wall, rss, em, expl, surf, fine, prog, matched, eligible, g2m, m2g, status in rows:
     name = names[ini]
     if wall == "stopped":
-        print("| %s | %s | stopped at %s (status %s) | %s so far | - | - | - | - | %s |"
+        print("| %s | %s | stopped at %s (status %s) | %s so far | - | - | - | - | %s | - | - |"
               % (f"{int(n):,}", name, cap, status, rss, prog))
     else:
-        print("| %s | %s | %s | %s | %s | %s %% | %s | %s | %s |"
-              % (f"{int(n):,}", name, wall, rss, em, expl, surf, fine, prog))
+        print("| %s | %s | %s | %s | %s | %s %% | %s | %s | %s | %s / %s | %s / %s |"
+              % (f"{int(n):,}", name, wall, rss, em, expl, surf, fine, prog, matched, eligible,
+                 g2m, m2g))
+print()
+print("""The last two columns are map-eval's (\`map-eval --map OUT --gt dense.gt.json\`):
+a \`--cloud\` map has no poses, so it is scored as it stands, in the world's
+frame, its points labelled by the nearest ground-truth object within 3 sigma
+(doc/evaluation.md, "A map without poses"). Surfaces matched: the
+ground-truth walls, doors, floors and ceilings the cloud saw (eligible) that
+a map surface matches. Error gt to map: the mean distance from the
+ground-truth surface points the cloud saw to the planar map; map to gt: the
+mean distance from the planar map's area (sampled every 5 cm) to the
+nearest ground-truth object, capped at 3 m: a rectangle that spans solid
+space or an unseen part of the building counts there.""")
 print()
 print("""EM (s) includes the neighbour graph of the cloud (the 4 nearest points
 within 0.15 m of each). Without blocks every iteration of the offline EM

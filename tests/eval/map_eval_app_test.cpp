@@ -244,6 +244,28 @@ std::size_t occupiedVoxels(const octomap::OcTree& tree) {
   return n;
 }
 
+// A --cloud map has no poses.txt: scored as it stands, its points labelled
+// by the nearest object; the same surface scores as with the beams' labels.
+TEST(MapEvalApp, Issue16_AMapWithoutPosesIsScoredAsItStands) {
+  const MapEvalArgs args = writeWorld(world(), "cloud");
+  fs::remove(args.map_dir / "poses.txt");
+  const json doc = evaluateMap(args);
+  EXPECT_TRUE(doc["pose"].is_null());
+  EXPECT_FALSE(doc.contains("pose_ate_m"));
+  EXPECT_FALSE(doc.contains("label_check"));
+  EXPECT_FALSE(doc.contains("octomap"));
+  EXPECT_NEAR(doc["labels"]["max_distance_m"].get<double>(), 0.03, 1e-12);  // 3 sigma
+  EXPECT_EQ(doc["matched_surfaces"], 2);
+  // Points on two objects at once go to the lower id: the floor's row on the
+  // wall's foot is the wall's, the bin's point at z = 0 the floor's. Every
+  // other point keeps its beam's label.
+  EXPECT_GT(doc["label_recall"].get<double>(), 0.95);
+  EXPECT_GT(doc["label_precision"].get<double>(), 0.95);
+  EXPECT_EQ(doc["clutter_points"], 39);
+  fs::remove(args.map_dir / "points.ply");
+  EXPECT_THROW(evaluateMap(args), InputError);
+}
+
 TEST(MapEvalApp, Item11_WritesOctomapBaselines) {
   MapEvalArgs args = writeWorld(world(), "item11");
   args.out = args.map_dir / "eval.json";  // the usual place: allowed

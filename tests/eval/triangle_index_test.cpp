@@ -51,6 +51,30 @@ TEST(TriangleIndex, MatchesBruteForce) {
   }
 }
 
+// Queries around and far outside the triangles' box (the shells are cut to
+// the occupied cells' box): the same distances as brute force.
+TEST(TriangleIndex, QueriesOutsideTheTrianglesBoxMatchBruteForce) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1), far(-6, 6);
+  std::vector<Triangle3> tris;
+  for (int k = 0; k < 100; ++k) {
+    const Vector3d a(2 * u(rng), 2 * u(rng), 0.5 * u(rng));  // a flat slab of triangles
+    tris.push_back({a, a + 0.3 * Vector3d(u(rng), u(rng), u(rng)),
+                    a + 0.3 * Vector3d(u(rng), u(rng), u(rng))});
+  }
+  TriangleIndexOptions o;
+  o.cell_m = 0.25;
+  o.max_distance_m = 3;
+  const TriangleIndex index(tris, o);
+  for (int q = 0; q < 2000; ++q) {
+    const Vector3d p(far(rng), far(rng), far(rng));
+    double best = o.max_distance_m;
+    for (const auto& t : tris)
+      best = std::min(best, (closestPointOnTriangle(t, p) - p).norm());
+    EXPECT_NEAR(index.distance(p), best, 1e-12) << p.transpose();
+  }
+}
+
 TEST(TriangleIndex, FarAndEmptyAreCapped) {
   TriangleIndexOptions o;
   o.max_distance_m = 1.0;

@@ -107,6 +107,10 @@ json meshJson(const MeshFile& mesh, const GroundTruth& gt,
   json e = {{"file", mesh.path.filename().string()},
             {"triangles", mesh.triangles.size()},
             {"file_bytes", mesh.bytes}};
+  if (mesh.triangles.empty()) {  // a --cloud map's raw.glb: every distance would be the cap
+    e["reason"] = "no triangles";
+    return e;
+  }
   addAccuracy(meshAccuracy(mesh.triangles, gt, samples, map_to_gt, options.accuracy), e);
   return e;
 }
@@ -165,7 +169,7 @@ std::vector<BaselineFile> addBaselineKeys(const OutputFolder& folder, const Grou
                               {"mesh_sample_m", options.accuracy.mesh_sample_m},
                               {"max_distance_m", options.accuracy.index.max_distance_m}};
   std::vector<BaselineFile> files;
-  if (in.origins) {
+  if (in.origins && options.octomap) {
     doc["octomap"] = octomapJson(in, gt, points, samples, map_to_gt, options, files);
   }
   if (in.raw) {

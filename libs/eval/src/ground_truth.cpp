@@ -236,6 +236,8 @@ void readHits(const json& doc, const Fields& f, GroundTruth& gt) {
   }
 }
 
+}  // namespace
+
 double distanceToCylinder(const GtCylinder& c, const Eigen::Vector3d& p) {
   const double dr = (p.head<2>() - c.centre).norm() - c.radius;  // > 0: outside the side
   const double dz = std::max(c.z_min - p.z(), p.z() - c.z_max);  // > 0: below or above
@@ -253,8 +255,6 @@ double distanceToBox(const GtBox& b, const Eigen::Vector3d& p) {
   }
   return (q - b.min).cwiseMin(b.max - q).minCoeff();  // inside: distance to the nearest face
 }
-
-}  // namespace
 
 double distanceToRectangle(const std::array<Eigen::Vector3d, 4>& c, const Eigen::Vector3d& p) {
   const Eigen::Vector3d u = c[1] - c[0];

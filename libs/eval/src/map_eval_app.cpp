@@ -15,6 +15,7 @@
 #include "pmap/eval/ground_truth.h"
 #include "pmap/eval/label_check.h"
 #include "pmap/eval/map_files.h"
+#include "pmap/eval/point_labels.h"
 #include "pmap/eval/pose_metrics.h"
 #include "pmap/eval/surface_evaluation.h"
 #include "pmap/eval/surface_files.h"
@@ -36,7 +37,8 @@ std::optional<MapEvalArgs> parseArgs(int argc, const char* const* argv) {
   TCLAP::CmdLine cmd(
       "map-eval: scores a planar-mapper output directory (poses.txt, points.ply, ...) against "
       "the ground truth written by indoor-sim (PREFIX.gt.json) and/or against the occupied "
-      "voxels of an OctoMap (.bt, --gt-octomap). Exit codes: 0 ok, 1 usage, 2 input data "
+      "voxels of an OctoMap (.bt, --gt-octomap). A map without poses.txt (--cloud) is scored "
+      "as it stands, in the ground truth's frame. Exit codes: 0 ok, 1 usage, 2 input data "
       "error, 4 output write error.",
       ' ', "0.1.0");
   TCLAP::ValueArg<std::string> map("m", "map", "planar-mapper output directory", true, "", "DIR",
@@ -166,13 +168,20 @@ void printReport(const json& doc) {
         v["map_to_voxels"]["mean_m"].get<double>(), v["map_to_voxels"]["p95_m"].get<double>(),
         v["coverage"].get<double>(), v["coverage_in_map_box"].get<double>());
   }
-  if (!doc.contains("pose_ate_m")) {
+  if (!doc.contains("gt")) {
     return;  // voxel ground truth only
   }
-  std::printf("pose_ate_m %.4f (first-pose aligned %.4f, %zu poses)\n",
-              doc["pose_ate_m"].get<double>(),
-              doc["pose"]["ate_first_pose_aligned_m"].get<double>(),
-              doc["pose"]["matched"].get<std::size_t>());
+  if (doc.contains("pose_ate_m")) {
+    std::printf("pose_ate_m %.4f (first-pose aligned %.4f, %zu poses)\n",
+                doc["pose_ate_m"].get<double>(),
+                doc["pose"]["ate_first_pose_aligned_m"].get<double>(),
+                doc["pose"]["matched"].get<std::size_t>());
+  } else {
+    std::printf(
+        "no poses (a --cloud map): scored as it stands, points labelled by the nearest "
+        "object within %.3f m\n",
+        doc["labels"]["max_distance_m"].get<double>());
+  }
   if (doc.contains("label_check") && !doc["label_check"]["median_m"].is_null()) {
     std::printf("points on their labelled surface within 3 sigma: %.4f (median %.4f m)\n",
                 doc["label_check"]["fraction_within_3sigma"].get<double>(),
@@ -215,6 +224,42 @@ void addVoxelEvaluation(const MapEvalArgs& args, const OutputFolder& folder,
   doc["voxel_gt"] = voxelJson(voxelAccuracy(gt, triangles, options), gt, args.gt_octomap, options);
 }
 
+// A map without poses.txt (planar-mapper --cloud) has no trajectory to
+// align and its points are not the ground truth's beams: it is scored as it
+// stands (the cloud must be in the world's frame), its points labelled by
+// the nearest ground-truth object within 3 sigma of the world's range noise
+// (at least 1 cm). No pose keys, no label check (the labels are distances
+// already), no OctoMap baseline (nothing to ray-cast from).
+MapEvaluation evaluateWithoutPoses(const MapEvalArgs& args, const OutputFolder& folder,
+                                   GroundTruth gt, MapEvaluation ev) {
+  if (!folder.has(OutputLayout::kPointsPly)) {
+    throw InputError(args.map_dir.string() + ": neither " + OutputLayout::kPosesTxt + " nor " +
+                     OutputLayout::kPointsPly + ": nothing to score against --gt");
+  }
+  const MapPoints points = readMapPoints(folder.file(OutputLayout::kPointsPly));
+  NearestLabelOptions labels;
+  labels.max_distance_m = std::max(0.01, 3.0 * gt.sigma_m);
+  gt.hits = nearestObjectHits(gt, points, labels);
+  json& doc = ev.doc;
+  doc["map"] = args.map_dir.string();
+  doc["gt"] = args.gt.string();
+  doc["world"] = gt.world;
+  doc["sigma_m"] = gt.sigma_m;
+  doc["pose"] = nullptr;
+  doc["labels"] = {{"from", "nearest ground-truth object (the map has no poses.txt)"},
+                   {"max_distance_m", labels.max_distance_m}};
+  const Rigid2D as_it_stands;
+  addSurfaceEvaluation(folder, gt, &points, as_it_stands, doc);
+  addTextureEvaluation(args, folder, gt, as_it_stands, ev);
+  BaselineOptions baselines;
+  baselines.octomap = false;
+  ev.files = addBaselineKeys(folder, gt, points, as_it_stands, baselines, doc);
+  if (!args.gt_octomap.empty()) {
+    addVoxelEvaluation(args, folder, as_it_stands, doc);
+  }
+  return ev;
+}
+
 }  // namespace
 
 MapEvaluation runEvaluation(const MapEvalArgs& args) {
@@ -239,6 +284,9 @@ MapEvaluation runEvaluation(const MapEvalArgs& args) {
     ev.warnings.push_back(args.gt.string() +
                           " has no surfaces or objects (a voxel world's?): the map's distances "
                           "to them are null; --gt-octomap scores the map against a .bt");
+  }
+  if (!folder.has(OutputLayout::kPosesTxt)) {
+    return evaluateWithoutPoses(args, folder, gt, std::move(ev));
   }
   const fs::path poses_txt = folder.file(OutputLayout::kPosesTxt);
   const poses::Trajectory estimated = readMapPoses(poses_txt);

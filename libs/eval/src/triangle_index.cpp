@@ -110,6 +110,8 @@ void TriangleIndex::insert(std::uint32_t k) {
   }
   const Eigen::Array3i lo = cellOf(t.a.cwiseMin(t.b).cwiseMin(t.c));
   const Eigen::Array3i hi = cellOf(t.a.cwiseMax(t.b).cwiseMax(t.c));
+  lo_ = k == 0 ? lo : lo_.min(lo);
+  hi_ = k == 0 ? hi : hi_.max(hi);
   for (int x = lo.x(); x <= hi.x(); ++x) {
     for (int y = lo.y(); y <= hi.y(); ++y) {
       for (int z = lo.z(); z <= hi.z(); ++z) {
@@ -138,13 +140,25 @@ double TriangleIndex::distance(const Eigen::Vector3d& p) const {
   }
   const Eigen::Array3i c = cellOf(p);
   const int max_ring = static_cast<int>(std::ceil(options_.max_distance_m / options_.cell_m)) + 1;
+  // Offsets that stay inside the box of the occupied cells (a far query,
+  // such as a map surface across solid space, would otherwise look up
+  // thousands of empty cells above and below the building).
+  const Eigen::Array3i from = lo_ - c, to = hi_ - c;
   for (int r = 0; r <= max_ring; ++r) {
-    // Cells of shell r (Chebyshev distance r from c).
-    for (int dx = -r; dx <= r; ++dx) {
-      for (int dy = -r; dy <= r; ++dy) {
-        const bool edge = std::abs(dx) == r || std::abs(dy) == r;
-        for (int dz = -r; dz <= r; dz += edge ? 1 : 2 * std::max(r, 1)) {
-          best = scanCell(c + Eigen::Array3i(dx, dy, dz), p, best);
+    // Cells of shell r (Chebyshev distance r from c) inside that box.
+    const int z0 = std::max(-r, from.z()), z1 = std::min(r, to.z());
+    for (int dx = std::max(-r, from.x()); dx <= std::min(r, to.x()); ++dx) {
+      for (int dy = std::max(-r, from.y()); dy <= std::min(r, to.y()); ++dy) {
+        if (std::abs(dx) == r || std::abs(dy) == r) {
+          for (int dz = z0; dz <= z1; ++dz) {
+            best = scanCell(c + Eigen::Array3i(dx, dy, dz), p, best);
+          }
+        } else {
+          for (const int dz : {-r, r}) {  // the shell's top and bottom (r > 0 here)
+            if (dz >= z0 && dz <= z1) {
+              best = scanCell(c + Eigen::Array3i(dx, dy, dz), p, best);
+            }
+          }
         }
       }
     }

@@ -20,6 +20,9 @@ namespace pmap::eval {
 
 struct BaselineOptions {
   std::vector<double> octomap_resolutions_m = {0.05, 0.10};
+  /// Build the OctoMap baselines (they ray-cast each scan from its origin in
+  /// scans.csv; a `--cloud` map's one origin at 0 means nothing).
+  bool octomap = true;
   AccuracyOptions accuracy;
   bool validate(std::string* why) const;
 };

@@ -75,6 +75,12 @@ struct GroundTruth {
 /// Reads PREFIX.gt.json. Throws InputError.
 GroundTruth readGroundTruth(const std::filesystem::path& path);
 
+/// Distance from p to a cylinder's surface (side and caps; inside too).
+double distanceToCylinder(const GtCylinder& c, const Eigen::Vector3d& p);
+
+/// Distance from p to a box's surface (inside too).
+double distanceToBox(const GtBox& b, const Eigen::Vector3d& p);
+
 /// Distance from p to the closest point of a planar convex quadrilateral
 /// (a rectangle given by its four corners in order).
 double distanceToRectangle(const std::array<Eigen::Vector3d, 4>& corners, const Eigen::Vector3d& p);

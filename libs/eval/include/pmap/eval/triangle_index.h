@@ -48,6 +48,8 @@ class TriangleIndex {
   std::vector<Triangle3> triangles_;
   TriangleIndexOptions options_;
   std::unordered_map<Key, std::vector<std::uint32_t>> cells_;
+  /// The box of the cells that hold a triangle (none outside it).
+  Eigen::Array3i lo_ = Eigen::Array3i::Constant(1), hi_ = Eigen::Array3i::Constant(0);
 };
 
 }  // namespace pmap::eval
