@@ -262,6 +262,12 @@ TEST(MapEvalApp, Issue16_AMapWithoutPosesIsScoredAsItStands) {
   EXPECT_GT(doc["label_recall"].get<double>(), 0.95);
   EXPECT_GT(doc["label_precision"].get<double>(), 0.95);
   EXPECT_EQ(doc["clutter_points"], 39);
+  // A map of several scans without poses.txt lost it: an input error.
+  SurfaceTestWorld two_scans = world();
+  two_scans.points.scan.back() = 1;
+  const MapEvalArgs lost = writeWorld(two_scans, "cloud_lost_poses");
+  fs::remove(lost.map_dir / "poses.txt");
+  EXPECT_THROW(evaluateMap(lost), InputError);
   fs::remove(args.map_dir / "points.ply");
   EXPECT_THROW(evaluateMap(args), InputError);
 }

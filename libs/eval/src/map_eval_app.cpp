@@ -2,6 +2,7 @@
 
 #include <mrpt/core/bits_math.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 #include <system_error>
@@ -237,6 +238,13 @@ MapEvaluation evaluateWithoutPoses(const MapEvalArgs& args, const OutputFolder& 
                      OutputLayout::kPointsPly + ": nothing to score against --gt");
   }
   const MapPoints points = readMapPoints(folder.file(OutputLayout::kPointsPly));
+  const auto scans =
+      std::count_if(points.scan.begin(), points.scan.end(), [](int scan) { return scan != 0; });
+  if (scans > 0) {  // a rawlog's map: its poses.txt is missing, not absent by design
+    throw InputError(args.map_dir.string() + ": no " + OutputLayout::kPosesTxt + ", but " +
+                     std::to_string(scans) + " of its points are not in scan 0 (only a --cloud " +
+                     "map, one scan, comes without poses)");
+  }
   NearestLabelOptions labels;
   labels.max_distance_m = std::max(0.01, 3.0 * gt.sigma_m);
   gt.hits = nearestObjectHits(gt, points, labels);
