@@ -57,6 +57,37 @@ TEST(PooledGrid, Item15_EqualsADenseMaxPoolEverywhere) {
   }
 }
 
+// A run of cells raised at once (raiseRow, across tile edges) holds what
+// raising each cell alone holds.
+TEST(PooledGrid, Item15_ARowRaisedAtOnceEqualsItsCellsOneByOne) {
+  const int cols = 45, rows = 20;
+  std::mt19937 rng(3);
+  std::uniform_int_distribution<int> uc(0, cols - 1), ur(0, rows - 1), un(1, 19);
+  std::uniform_real_distribution<float> v(0.0f, 1.0f);
+  PooledGrid runs(cols, rows), cells(cols, rows);
+  for (int i = 0; i < 60; ++i) {
+    const int r = ur(rng), c = uc(rng), n = std::min(un(rng), cols - c);
+    std::vector<float> values(static_cast<std::size_t>(n));
+    for (float& x : values) {
+      x = v(rng);
+    }
+    runs.raiseRow(c, r, values.data(), n);
+    for (int k = 0; k < n; ++k) {
+      cells.raise(c + k, r, values[static_cast<std::size_t>(k)]);
+    }
+  }
+  runs.pool(3);
+  cells.pool(3);
+  for (int h = 0; h < 3; ++h) {
+    for (int r = 0; r < rows; ++r) {
+      for (int c = 0; c < cols; ++c) {
+        ASSERT_EQ(runs.at(h, c, r), cells.at(h, c, r)) << "level " << h << " at " << c << ", " << r;
+      }
+    }
+  }
+  EXPECT_EQ(runs.tiles(), cells.tiles());
+}
+
 // Tiles are allocated only near non-zero cells: one point in a large grid
 // takes a few tiles per level, not the grid.
 TEST(PooledGrid, Item15_StoresOnlyTilesNearTheData) {

@@ -13,16 +13,27 @@ PooledGrid::PooledGrid(int cols, int rows)
   levels_[0].index.assign(static_cast<std::size_t>(tile_cols_) * tile_rows_, -1);
 }
 
-void PooledGrid::raise(int c, int r, float v) {
+void PooledGrid::raiseRow(int c, int r, const float* values, int n) {
   Level& level = levels_[0];
-  std::int32_t& t = level.index[static_cast<std::size_t>((r >> kBits) * tile_cols_ + (c >> kBits))];
-  if (t < 0) {
-    t = static_cast<std::int32_t>(level.cells.size() / kCells);
-    level.cells.resize(level.cells.size() + kCells, 0.0f);
+  const std::size_t row = static_cast<std::size_t>((r >> kBits) * tile_cols_);
+  const std::size_t in_row = static_cast<std::size_t>((r & kMask) << kBits);
+  while (n > 0) {
+    std::int32_t& t = level.index[row + static_cast<std::size_t>(c >> kBits)];
+    if (t < 0) {
+      t = static_cast<std::int32_t>(level.cells.size() / kCells);
+      level.cells.resize(level.cells.size() + kCells, 0.0f);
+    }
+    // The run's cells in this tile are contiguous: its row within the tile.
+    float* cells = &level.cells[static_cast<std::size_t>(t) * kCells + in_row];
+    const int here = std::min(n, kSide - (c & kMask));
+    for (int k = 0; k < here; ++k) {
+      float& cell = cells[(c + k) & kMask];
+      cell = std::max(cell, values[k]);
+    }
+    c += here;
+    values += here;
+    n -= here;
   }
-  float& cell = level.cells[static_cast<std::size_t>(t) * kCells +
-                            static_cast<std::size_t>(((r & kMask) << kBits) | (c & kMask))];
-  cell = std::max(cell, v);
 }
 
 std::int32_t PooledGrid::tileIndex(const Level& level, int tc, int tr) const {

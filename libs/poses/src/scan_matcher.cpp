@@ -97,6 +97,7 @@ void ScanMatcher::buildGrid(const std::vector<Eigen::Vector2d>& reference) {
   // exp(-|c - p|^2 / 2 s^2) = exp(-dx^2 / 2 s^2) exp(-dy^2 / 2 s^2): 2 (2r + 1)
   // exponentials per point instead of (2r + 1)^2.
   std::vector<double> gx(static_cast<std::size_t>(2 * r + 1)), gy(gx.size());
+  std::vector<float> row(gx.size());  // one row of a point's cells
   for (const auto& p : reference) {
     const int pc = static_cast<int>(std::floor((p.x() - grid_.x0) / res));
     const int pr = static_cast<int>(std::floor((p.y() - grid_.y0) / res));
@@ -106,20 +107,17 @@ void ScanMatcher::buildGrid(const std::vector<Eigen::Vector2d>& reference) {
       gx[static_cast<std::size_t>(d + r)] = std::exp(-dx * dx * inv2s2);
       gy[static_cast<std::size_t>(d + r)] = std::exp(-dy * dy * inv2s2);
     }
+    const int c0 = std::max(pc - r, 0), c1 = std::min(pc + r, cols - 1);
     for (int dr = -r; dr <= r; ++dr) {
       const int rr = pr + dr;
-      if (rr < 0 || rr >= rows) {
+      if (rr < 0 || rr >= rows || c0 > c1) {
         continue;
       }
-      for (int dc = -r; dc <= r; ++dc) {
-        const int c = pc + dc;
-        if (c < 0 || c >= cols) {
-          continue;
-        }
-        grid_.levels.raise(c, rr,
-                           static_cast<float>(gx[static_cast<std::size_t>(dc + r)] *
-                                              gy[static_cast<std::size_t>(dr + r)]));
+      for (int c = c0; c <= c1; ++c) {
+        row[static_cast<std::size_t>(c - c0)] = static_cast<float>(
+            gx[static_cast<std::size_t>(c - pc + r)] * gy[static_cast<std::size_t>(dr + r)]);
       }
+      grid_.levels.raiseRow(c0, rr, row.data(), c1 - c0 + 1);
     }
   }
   grid_.levels.pool(options_.levels);

@@ -26,7 +26,10 @@ class PooledGrid {
   bool empty() const { return levels_.empty(); }
 
   /// Level 0: cell (c, r) = max(cell, v); (c, r) must be inside the grid.
-  void raise(int c, int r, float v);
+  void raise(int c, int r, float v) { raiseRow(c, r, &v, 1); }
+  /// Level 0: cells (c + k, r) = max(cell, values[k]) for k in [0, n); they
+  /// must be inside the grid. One tile look-up per tile the run crosses.
+  void raiseRow(int c, int r, const float* values, int n);
   /// Adds levels until there are `count`: level h holds the max over
   /// [c, c + 2^h) x [r, r + 2^h) of level 0 (cells past the grid count 0).
   void pool(int count);
