@@ -225,6 +225,30 @@ void addVoxelEvaluation(const MapEvalArgs& args, const OutputFolder& folder,
   doc["voxel_gt"] = voxelJson(voxelAccuracy(gt, triangles, options), gt, args.gt_octomap, options);
 }
 
+/// The run's and the ground truth's identity keys of eval.json.
+void addSourceKeys(const MapEvalArgs& args, const GroundTruth& gt, json& doc) {
+  doc["map"] = args.map_dir.string();
+  doc["gt"] = args.gt.string();
+  doc["world"] = gt.world;
+  doc["sigma_m"] = gt.sigma_m;
+}
+
+/// Everything scored against --gt (and --gt-octomap) once the map is in the
+/// ground truth's frame by map_to_gt: surfaces, textures, baselines (when
+/// the map has points.ply) and voxels.
+void addMapScores(const MapEvalArgs& args, const OutputFolder& folder, const GroundTruth& gt,
+                  const MapPoints* points, const Rigid2D& map_to_gt,
+                  const BaselineOptions& baselines, MapEvaluation& ev) {
+  addSurfaceEvaluation(folder, gt, points, map_to_gt, ev.doc);
+  addTextureEvaluation(args, folder, gt, map_to_gt, ev);
+  if (points != nullptr) {
+    ev.files = addBaselineKeys(folder, gt, *points, map_to_gt, baselines, ev.doc);
+  }
+  if (!args.gt_octomap.empty()) {
+    addVoxelEvaluation(args, folder, map_to_gt, ev.doc);
+  }
+}
+
 // A map without poses.txt (planar-mapper --cloud) has no trajectory to
 // align and its points are not the ground truth's beams: it is scored as it
 // stands (the cloud must be in the world's frame), its points labelled by
@@ -248,23 +272,13 @@ MapEvaluation evaluateWithoutPoses(const MapEvalArgs& args, const OutputFolder& 
   NearestLabelOptions labels;
   labels.max_distance_m = std::max(0.01, 3.0 * gt.sigma_m);
   gt.hits = nearestObjectHits(gt, points, labels);
-  json& doc = ev.doc;
-  doc["map"] = args.map_dir.string();
-  doc["gt"] = args.gt.string();
-  doc["world"] = gt.world;
-  doc["sigma_m"] = gt.sigma_m;
-  doc["pose"] = nullptr;
-  doc["labels"] = {{"from", "nearest ground-truth object (the map has no poses.txt)"},
-                   {"max_distance_m", labels.max_distance_m}};
-  const Rigid2D as_it_stands;
-  addSurfaceEvaluation(folder, gt, &points, as_it_stands, doc);
-  addTextureEvaluation(args, folder, gt, as_it_stands, ev);
+  addSourceKeys(args, gt, ev.doc);
+  ev.doc["pose"] = nullptr;
+  ev.doc["labels"] = {{"from", "nearest ground-truth object (the map has no poses.txt)"},
+                      {"max_distance_m", labels.max_distance_m}};
   BaselineOptions baselines;
   baselines.octomap = false;
-  ev.files = addBaselineKeys(folder, gt, points, as_it_stands, baselines, doc);
-  if (!args.gt_octomap.empty()) {
-    addVoxelEvaluation(args, folder, as_it_stands, doc);
-  }
+  addMapScores(args, folder, gt, &points, Rigid2D{}, baselines, ev);  // as it stands
   return ev;
 }
 
@@ -304,10 +318,7 @@ MapEvaluation runEvaluation(const MapEvalArgs& args) {
                      ": no pose overlaps the ground truth's time span (different run?)");
   }
   json& doc = ev.doc;
-  doc["map"] = args.map_dir.string();
-  doc["gt"] = args.gt.string();
-  doc["world"] = gt.world;
-  doc["sigma_m"] = gt.sigma_m;
+  addSourceKeys(args, gt, doc);
   doc["pose_ate_m"] = pe.ate_m;
   doc["pose"] = poseJson(pe);
   std::optional<MapPoints> points;
@@ -315,14 +326,7 @@ MapEvaluation runEvaluation(const MapEvalArgs& args) {
     points = readMapPoints(folder.file(OutputLayout::kPointsPly));
     doc["label_check"] = labelJson(checkLabels(gt, *points, pe.alignment));
   }
-  addSurfaceEvaluation(folder, gt, points ? &*points : nullptr, pe.alignment, doc);
-  addTextureEvaluation(args, folder, gt, pe.alignment, ev);
-  if (points) {
-    ev.files = addBaselineKeys(folder, gt, *points, pe.alignment, BaselineOptions{}, doc);
-  }
-  if (!args.gt_octomap.empty()) {
-    addVoxelEvaluation(args, folder, pe.alignment, doc);
-  }
+  addMapScores(args, folder, gt, points ? &*points : nullptr, pe.alignment, BaselineOptions{}, ev);
   return ev;
 }
 
