@@ -86,6 +86,21 @@ TEST(GroundTruthFile, Item12_NonFiniteAndNonIntegerValuesAreInputErrorsNamingThe
             std::string::npos);
 }
 
+TEST(GroundTruthFile, Issue16_PeopleWalkingThroughAreReadAsPeople) {
+  std::string text = gtText("3", "[3, 9, -1]");
+  text.insert(text.rfind('}'), R"(, "people": [{"id": 9, "kind": "person", "radius_m": 0.25}])");
+  const std::filesystem::path dir = std::filesystem::path(PMAP_TEST_TMP_DIR) / "ground_truth";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "people.gt.json") << text;
+  const GroundTruth gt = readGroundTruth(dir / "people.gt.json");
+  EXPECT_TRUE(gt.isPerson(9));
+  EXPECT_FALSE(gt.isPerson(3));
+  EXPECT_FALSE(gt.isClutter(9));  // no fixed shape: not among the cylinders and boxes
+  std::string no_id = gtText("3", "[3]");
+  no_id.insert(no_id.rfind('}'), R"(, "people": [{"kind": "person"}])");
+  EXPECT_NE(groundTruthError("people_bad.gt.json", no_id).find("people[]"), std::string::npos);
+}
+
 TEST(GroundTruthFile, Item12_DirectoryIsAnInputErrorNamingThePath) {
   const std::filesystem::path dir = std::filesystem::path(PMAP_TEST_TMP_DIR) / "ground_truth_dir";
   std::filesystem::create_directories(dir);

@@ -72,6 +72,23 @@ TEST(LabelMetrics, ClutterRejectionCounts) {
   EXPECT_NEAR(*m.precision, 100.0 / 102.0, 1e-12);
 }
 
+// A person walking through is clutter that moves: its points belong on no surface.
+TEST(LabelMetrics, Issue16_PeopleCountAsClutter) {
+  SurfaceTestWorld w;
+  w.addRectangle(1, "wall", rectangle({0, 0, 0}, {5, 0, 0}, {0, 0, 3}));
+  w.gt.people = {50};
+  w.addGrid(1, 10, 10, 10);
+  for (int i = 0; i < 3; ++i) {
+    w.addPoint({1, 1.2, 0.5}, 50, -1);  // rejected
+  }
+  w.addPoint({1, 1.2, 0.5}, 50, 10);  // absorbed by the wall's map surface
+  w.surfaces = {surfaceWithNormal(10, {0, 1, 0})};
+  const LabelMetrics m = metrics(w, {1});
+  EXPECT_EQ(m.clutter_points, 4u);
+  EXPECT_EQ(m.clutter_rejected, 3u);
+  EXPECT_NEAR(*m.precision, 100.0 / 101.0, 1e-12);
+}
+
 TEST(LabelMetrics, NothingAssignedLeavesPrecisionUndefined) {
   SurfaceTestWorld w;
   w.addRectangle(1, "wall", rectangle({0, 0, 0}, {5, 0, 0}, {0, 0, 3}));

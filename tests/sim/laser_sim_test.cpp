@@ -223,6 +223,76 @@ TEST(LaserSim, DropoutsAndSpuriousReturnsComeAtTheirRates) {
   EXPECT_NEAR(static_cast<double>(lost) / beams, 0.9 * 0.3, 0.03);
 }
 
+/// A corridor along x closed at x = 20, with a pane across it at x = 14 of
+/// kind `pane` ("" for none).
+World corridorWithPane(const std::string& pane) {
+  const std::string rect =
+      pane.empty()
+          ? ""
+          : R"(, "rectangles": [{"kind": ")" + pane +
+                R"(", "corners": [[14, 1, 0], [14, -1, 0], [14, -1, 2.5], [14, 1, 2.5]]}])";
+  return buildWorld(parseWorldText(
+      R"({"name": "c", "corridors": [{"centreline": [[0, 0], [20, 0]], "width_m": 2.0,
+          "height_m": 2.5}], "path": {"waypoints": [[1, 0], [12, 0]]})" +
+          rect + "}",
+      "w.json"));
+}
+
+// Glass: a beam meeting the pane within glass_return_deg of its normal
+// returns from it (as from an opaque pane), any other returns from what lies
+// behind (as if there were no pane).
+TEST(LaserSim, Issue16_ABeamGoesThroughGlassUnlessItMeetsThePaneSquarely) {
+  const World glass = corridorWithPane("glass");
+  const World opaque = corridorWithPane("wall");
+  const World none = corridorWithPane("");
+  const RayCaster g(glass), o(opaque), n(none);
+  const int pane = static_cast<int>(none.surfaces.size());
+  const Pose2D robot{10.0, 0.05, 0.02};
+  const LaserOptions& laser = glass.sensors.laser_h;
+  NoiseOptions exact = gaussian(0.0);
+  const double cos_return = std::cos(exact.laser.glass_return_deg * M_PI / 180.0);
+  Rng r1(1), r2(1), r3(1);
+  const SimulatedScan sg = simulateScan(g, robot, laser, exact, r1);
+  const SimulatedScan so = simulateScan(o, robot, laser, exact, r2);
+  const SimulatedScan sn = simulateScan(n, robot, laser, exact, r3);
+  int specular = 0, through = 0;
+  for (std::size_t i = 0; i < sg.ranges_m.size(); ++i) {
+    const Eigen::Vector3d dir = beamDirectionInWorld(robot, laser, static_cast<int>(i));
+    const bool on_pane = so.hit_ids[i] == pane;
+    const bool square = on_pane && std::abs(dir.x()) >= cos_return;  // the pane's normal is -x
+    const SimulatedScan& expected = !on_pane || square ? so : sn;
+    EXPECT_EQ(sg.hit_ids[i], expected.hit_ids[i]) << i;
+    EXPECT_DOUBLE_EQ(sg.true_ranges_m[i], expected.true_ranges_m[i]) << i;
+    specular += square ? 1 : 0;
+    through += on_pane && !square ? 1 : 0;
+  }
+  EXPECT_GT(specular, 5);
+  EXPECT_GT(through, 2);
+}
+
+TEST(LaserSim, Issue16_GlassDropoutLosesOnlyBeamsThatWentThroughGlass) {
+  const World glass = corridorWithPane("glass");
+  const World opaque = corridorWithPane("wall");
+  const RayCaster g(glass), o(opaque);
+  const int pane = static_cast<int>(glass.surfaces.size()) - 1;
+  const Pose2D robot{10.0, 0.05, 0.02};
+  const LaserOptions& laser = glass.sensors.laser_h;
+  NoiseOptions noise = gaussian(0.0);
+  noise.laser.glass_dropout_probability = 1.0;
+  const double cos_return = std::cos(noise.laser.glass_return_deg * M_PI / 180.0);
+  Rng r1(1), r2(1);
+  const SimulatedScan sg = simulateScan(g, robot, laser, noise, r1);
+  const SimulatedScan so = simulateScan(o, robot, laser, noise, r2);
+  int lost = 0;
+  for (std::size_t i = 0; i < sg.ranges_m.size(); ++i) {
+    const Eigen::Vector3d dir = beamDirectionInWorld(robot, laser, static_cast<int>(i));
+    const bool through = so.hit_ids[i] == pane && std::abs(dir.x()) < cos_return;
+    EXPECT_EQ(sg.valid[i] == 0, through) << i;
+    lost += through ? 1 : 0;
+  }
+  EXPECT_GT(lost, 2);
+}
+
 // At a depth edge (a column 4.7 m ahead in front of the end wall 10 m
 // ahead), mixed returns lie between the two surfaces, on neither; along the
 // side walls met at grazing angles, where neighbouring ranges jump too, the

@@ -200,6 +200,15 @@ void readClutter(const json& doc, const Fields& f, GroundTruth& gt) {
   }
 }
 
+void readPeople(const json& doc, const Fields& f, GroundTruth& gt) {
+  if (!doc.contains("people")) {
+    return;
+  }
+  for (const json& p : doc["people"]) {
+    gt.people.push_back(f.integer(p, "id", "people[]"));
+  }
+}
+
 /// Fast path for the many hit ids: a JSON integer in int range.
 bool intValue(const json& v, int& out) {
   if (v.is_number_unsigned()) {
@@ -305,6 +314,10 @@ bool GroundTruth::isClutter(int id) const {
   return false;
 }
 
+bool GroundTruth::isPerson(int id) const {
+  return std::find(people.begin(), people.end(), id) != people.end();
+}
+
 double GroundTruth::distance(int id, const Eigen::Vector3d& p) const {
   if (const GtRectangle* r = surface(id)) {
     return distanceToRectangle(r->corners, p);
@@ -330,6 +343,7 @@ GroundTruth readGroundTruth(const std::filesystem::path& path) {
     readPoses(doc, f, gt);
     readSurfaces(doc, f, gt);
     readClutter(doc, f, gt);
+    readPeople(doc, f, gt);
     readPosters(doc, f, path.parent_path(), gt);
 
     readHits(doc, f, gt);

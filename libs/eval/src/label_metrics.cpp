@@ -20,6 +20,7 @@ std::unordered_set<int> clutterIds(const GroundTruth& gt) {
   for (const auto& b : gt.boxes) {
     ids.insert(b.id);
   }
+  ids.insert(gt.people.begin(), gt.people.end());  // people walking through: clutter that moves
   return ids;
 }
 

@@ -94,6 +94,7 @@ json labelJson(const LabelCheck& c) {
   return {{"points", c.points},
           {"labelled", c.labelled},
           {"unlabelled", c.unlabelled},
+          {"on_people", c.on_people},
           {"within_3sigma", c.within_3sigma},
           {"fraction_within_3sigma", value(c.fraction_within_3sigma)},
           {"median_m", value(c.median_m)},

@@ -57,6 +57,9 @@ OrderedJson GroundTruthRecorder::toJson(const World& world, const GroundTruthMet
   doc["surfaces"] = surfacesJson(world);
   doc["posters"] = postersJson(world, meta.images_dir_name);
   doc["clutter"] = clutterJson(world);
+  if (!world.people.empty()) {  // only then: the files of worlds without people stay as they were
+    doc["people"] = peopleJson(world);
+  }
   OrderedJson scans = OrderedJson::array();
   for (std::size_t i = 0; i < scans_.size(); ++i) {
     scans.push_back({{"index", i},

@@ -119,6 +119,33 @@ OrderedJson clutterJson(const World& world) {
   return out;
 }
 
+OrderedJson peopleJson(const World& world) {
+  OrderedJson out = OrderedJson::array();
+  for (const WalkingPerson& p : world.people) {
+    const PersonSpec& s = p.spec();
+    OrderedJson waypoints = OrderedJson::array();
+    for (const Eigen::Vector2d& w : s.waypoints) {
+      waypoints.push_back({w.x(), w.y()});
+    }
+    OrderedJson j;
+    j["id"] = p.id;
+    j["kind"] = "person";
+    j["shape"] = "cylinder";
+    j["radius_m"] = s.radius_m;
+    j["z_min_m"] = 0.0;
+    j["z_max_m"] = s.height_m;
+    j["waypoints"] = waypoints;
+    j["speed_m_s"] = s.speed_m_s;
+    j["corner_radius_m"] = p.walk().cornerRadius_m();
+    j["start_s"] = s.start_s;
+    j["walk"] =
+        "stands at the first waypoint until start_s, then walks to the last and back, "
+        "again and again";
+    out.push_back(j);
+  }
+  return out;
+}
+
 OrderedJson octomapJson(const VoxelWorld& voxels) {
   const OctreeFileInfo& info = voxels.info();
   const double res = voxels.resolution_m();

@@ -69,6 +69,7 @@ SimulatedScan simulateScan(const BeamCaster& cast, const Pose2D& robot, const La
   scan.hit_ids.resize(n);
   scan.true_ranges_m.resize(n);
   std::vector<char> has_hit(n, 0);
+  std::vector<char> through_glass(n, 0);
   std::vector<double> cosines(n, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
     const double a = beamAngle(laser, static_cast<int>(i));
@@ -77,6 +78,7 @@ SimulatedScan simulateScan(const BeamCaster& cast, const Pose2D& robot, const La
     scan.hit_ids[i] = hit ? hit->id : -1;
     scan.true_ranges_m[i] = hit ? hit->t_m : laser.max_range_m;
     has_hit[i] = hit ? 1 : 0;
+    through_glass[i] = hit && hit->through_glass ? 1 : 0;
     cosines[i] = hit ? std::abs(dir.dot(hit->normal)) : 0.0;
   }
   // Spurious and mixed returns are marked after the loop: the depth edges
@@ -104,6 +106,11 @@ SimulatedScan simulateScan(const BeamCaster& cast, const Pose2D& robot, const La
         on_no_object[i] = 1;
       }
     }
+    // Drawn only for beams through glass: worlds without glass keep their streams.
+    if (through_glass[i] && l.glass_dropout_probability > 0.0 &&
+        rng.uniform() < l.glass_dropout_probability) {
+      ok = false;
+    }
     ok = ok && noisy > 0.0 && noisy <= laser.max_range_m;
     scan.valid[i] = ok ? 1 : 0;
     scan.ranges_m[i] = static_cast<float>(ok ? noisy : laser.max_range_m);
@@ -114,16 +121,43 @@ SimulatedScan simulateScan(const BeamCaster& cast, const Pose2D& robot, const La
   return scan;
 }
 
+std::optional<BeamHit> castBeam(const RayCaster& caster, const std::vector<int>& candidates,
+                                const NoiseOptions& noise, double t_s,
+                                const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
+                                double max_range_m) {
+  constexpr int kMaxPanes = 8;  // a beam through more panes than this returns from the last
+  const double cos_return = std::cos(noise.laser.glass_return_deg * M_PI / 180.0);
+  const std::vector<WalkingPerson>& people = caster.world().people;
+  double t_min = 1e-9;
+  bool through_glass = false;
+  for (int pane = 0;; ++pane) {
+    const std::optional<SceneHit> hit = caster.cast(origin, dir, max_range_m, &candidates, t_min);
+    const double t_max = hit ? hit->t : max_range_m;
+    if (const auto person = castPeople(people, t_s, origin, dir, t_min, t_max)) {
+      const int id = people[static_cast<std::size_t>(person->index)].id;
+      return BeamHit{person->hit.t, id, person->hit.normal, through_glass};
+    }
+    if (!hit) {
+      return std::nullopt;
+    }
+    const bool specular = std::abs(dir.dot(hit->normal)) >= cos_return;
+    if (!caster.isGlass(*hit) || specular || pane == kMaxPanes) {
+      return BeamHit{hit->t, hit->id, hit->normal, through_glass};
+    }
+    through_glass = true;
+    t_min = hit->t + 1e-6;
+  }
+}
+
 SimulatedScan simulateScan(const RayCaster& caster, const Pose2D& robot, const LaserOptions& laser,
-                           const NoiseOptions& noise, Rng& rng) {
+                           const NoiseOptions& noise, Rng& rng, double t_s) {
   const RigidTransform sensor = laserToWorld(robot, laser);
   // Every beam lies in the sensor's x-y plane: only objects meeting it matter.
   const std::vector<int> candidates =
       caster.selectNearPlane(sensor.translation, sensor.rotation.col(2), laser.max_range_m);
   const BeamCaster cast = [&](const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
-                              double max_range_m) -> std::optional<BeamHit> {
-    const auto hit = caster.cast(origin, dir, max_range_m, &candidates);
-    return hit ? std::optional<BeamHit>(BeamHit{hit->t, hit->id, hit->normal}) : std::nullopt;
+                              double max_range_m) {
+    return castBeam(caster, candidates, noise, t_s, origin, dir, max_range_m);
   };
   return simulateScan(cast, robot, laser, noise, rng);
 }

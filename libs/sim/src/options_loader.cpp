@@ -138,6 +138,9 @@ NoiseOptions readNoise(JsonReader r) {
   l.mixed_pixel_probability =
       r.number("mixed_pixel_probability", l.mixed_pixel_probability, closed(0.0, 1.0));
   l.mixed_pixel_jump_m = r.number("mixed_pixel_jump_m", l.mixed_pixel_jump_m, closed(0.001, 100.0));
+  l.glass_return_deg = r.number("glass_return_deg", l.glass_return_deg, closed(0.0, 90.0));
+  l.glass_dropout_probability =
+      r.number("glass_dropout_probability", l.glass_dropout_probability, closed(0.0, 1.0));
   if (r.has("image_sigma")) {
     r.fail("image_sigma",
            "moved: image noise is sensors.cameras.noise (read_sigma_dn, full_well_e)");

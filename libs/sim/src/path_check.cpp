@@ -29,7 +29,8 @@ std::string objectName(const RayCaster& caster, const SceneHit& hit) {
 }  // namespace
 
 void checkPathClearance(const RayCaster& caster, const Trajectory& trajectory,
-                        double robot_radius_m, const std::string& file) {
+                        double robot_radius_m, const std::string& file, const std::string& who,
+                        const std::string& moves) {
   const int steps = static_cast<int>(std::ceil(trajectory.length_m() / kStep_m));
   for (int k = 0; k <= steps; ++k) {
     const Pose2D a = trajectory.poseAtDistance(k * kStep_m);
@@ -42,7 +43,7 @@ void checkPathClearance(const RayCaster& caster, const Trajectory& trajectory,
       const Eigen::Vector3d step(b.x - a.x, b.y - a.y, 0.0);
       if (step.norm() > 1e-12) {
         if (const auto hit = caster.cast(o, step, 1.0, &near)) {
-          fail(file, "the robot drives through " + objectName(caster, *hit), a);
+          fail(file, who + " " + moves + " through " + objectName(caster, *hit), a);
         }
       }
       for (int d = 0; d < kDirections && robot_radius_m > 0.0; ++d) {
@@ -50,7 +51,7 @@ void checkPathClearance(const RayCaster& caster, const Trajectory& trajectory,
         const Eigen::Vector3d dir(std::cos(angle), std::sin(angle), 0.0);
         if (const auto hit = caster.cast(o, dir, robot_radius_m, &near)) {
           fail(file,
-               "the robot (radius " + std::to_string(robot_radius_m) + " m) touches " +
+               who + " (radius " + std::to_string(robot_radius_m) + " m) touches " +
                    objectName(caster, *hit),
                a);
         }

@@ -8,6 +8,7 @@ RayCaster::RayCaster(const World& world) : world_(world) {
   for (const Surface& s : world.surfaces) {
     const double r = 0.5 * std::hypot(s.rect.length_u, s.rect.length_v);
     spheres_.push_back(Sphere{s.rect.centre(), r});
+    glass_.push_back(s.kind == "glass" ? 1 : 0);
   }
   for (const Clutter& c : world.clutter) {
     if (c.shape == ClutterShape::kCylinder) {

@@ -221,7 +221,9 @@ cv::Mat Renderer::render(const PinholeIntrinsics& k, const RigidTransform& camer
           cv::Mat(k.height_px, k.width_px, CV_64FC1,
                   cv::Scalar(std::numeric_limits<double>::infinity()))};
   for (const Surface& s : world_.surfaces) {
-    drawSurface(s, f);
+    if (s.kind != "glass") {  // clear glass: the camera sees what lies behind it
+      drawSurface(s, f);
+    }
   }
   for (const Clutter& c : world_.clutter) {
     drawClutter(c, f);

@@ -138,6 +138,12 @@ bool LaserErrorOptions::validate(std::string* why) const {
   if (!(mixed_pixel_jump_m > 0.0 && mixed_pixel_jump_m <= 100.0)) {
     return fail(why, "mixed_pixel_jump_m must be in (0, 100]");
   }
+  if (!(glass_return_deg >= 0.0 && glass_return_deg <= 90.0)) {
+    return fail(why, "glass_return_deg must be in [0, 90]");
+  }
+  if (!(glass_dropout_probability >= 0.0 && glass_dropout_probability <= 1.0)) {
+    return fail(why, "glass_dropout_probability must be in [0, 1]");
+  }
   return true;
 }
 

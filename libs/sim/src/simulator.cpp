@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <utility>
 
@@ -22,9 +23,10 @@
 namespace pmap::sim {
 namespace {
 
-/// One scan of a laser from a robot pose, by the world's own ray casting.
-using Scanner =
-    std::function<SimulatedScan(const Pose2D&, const LaserOptions&, const NoiseOptions&, Rng&)>;
+/// One scan of a laser from a robot pose at a time (where the people are), by
+/// the world's own ray casting.
+using Scanner = std::function<SimulatedScan(const Pose2D&, const LaserOptions&, const NoiseOptions&,
+                                            Rng&, double t_s)>;
 
 /// Simulates the cycles of one run and feeds the rawlog and the ground truth.
 /// Without `beam_ids` (voxel worlds) the structure scans carry no hit ids.
@@ -64,7 +66,7 @@ CycleRunner::Timed CycleRunner::scan(const LaserOptions& laser, std::size_t k, d
                                      GroundTruthRecorder* gt) {
   const double sigma = world_.noise.range_sigma_m;
   Rng rng(deriveSeed(options_.seed, "laser:" + laser.label, k));
-  const SimulatedScan s = scanner_(trajectory_.poseAtTime(t_rel), laser, world_.noise, rng);
+  const SimulatedScan s = scanner_(trajectory_.poseAtTime(t_rel), laser, world_.noise, rng, t_rel);
   const auto stamp = simTimestamp(world_.sensors.start_time_s, t_rel);
   if (gt != nullptr) {
     gt->addStructureScan(mrpt::Clock::toDouble(stamp), laser.label,
@@ -117,21 +119,50 @@ CycleRecord CycleRunner::run(std::size_t k, GroundTruthRecorder& gt) {
   return record;
 }
 
-/// The scans of a voxel world (`voxel_caster` set) or of a world of rectangles.
-Scanner makeScanner(const RayCaster* rectangles, const VoxelRayCaster* voxel_caster) {
+/// The scans of a voxel world (`voxel_caster` set) or of a world of rectangles;
+/// the world's people walk through either.
+Scanner makeScanner(const World& world, const RayCaster* rectangles,
+                    const VoxelRayCaster* voxel_caster) {
   if (voxel_caster != nullptr) {
     const VoxelRayCaster& voxels = *voxel_caster;
-    const BeamCaster cast = [&voxels](const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
-                                      double max_range_m) -> std::optional<BeamHit> {
-      const std::optional<VoxelHit> hit = voxels.cast(origin, dir, max_range_m);
-      return hit ? std::optional<BeamHit>(BeamHit{hit->t, -1}) : std::nullopt;
+    const std::vector<WalkingPerson>& people = world.people;
+    return [&voxels, &people](const Pose2D& robot, const LaserOptions& laser,
+                              const NoiseOptions& noise, Rng& rng, double t_s) {
+      const BeamCaster cast = [&](const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
+                                  double max_range_m) -> std::optional<BeamHit> {
+        const std::optional<VoxelHit> hit = voxels.cast(origin, dir, max_range_m);
+        const double t_max = hit ? hit->t : max_range_m;
+        if (const auto p = castPeople(people, t_s, origin, dir, 1e-9, t_max)) {
+          return BeamHit{p->hit.t, people[static_cast<std::size_t>(p->index)].id, p->hit.normal};
+        }
+        return hit ? std::optional<BeamHit>(BeamHit{hit->t, -1}) : std::nullopt;
+      };
+      return simulateScan(cast, robot, laser, noise, rng);
     };
-    return [cast](const Pose2D& robot, const LaserOptions& laser, const NoiseOptions& noise,
-                  Rng& rng) { return simulateScan(cast, robot, laser, noise, rng); };
   }
   const RayCaster& caster = *rectangles;
-  return [&caster](const Pose2D& robot, const LaserOptions& laser, const NoiseOptions& noise,
-                   Rng& rng) { return simulateScan(caster, robot, laser, noise, rng); };
+  return
+      [&caster](const Pose2D& robot, const LaserOptions& laser, const NoiseOptions& noise, Rng& rng,
+                double t_s) { return simulateScan(caster, robot, laser, noise, rng, t_s); };
+}
+
+/// People walk where the robot cannot be: refused with the time and place
+/// where one of them comes within the robot's radius of the robot.
+void checkPeopleMissTheRobot(const World& world, const Trajectory& robot, double duration_s,
+                             const std::string& file) {
+  constexpr double kStep_s = 0.02;
+  for (const WalkingPerson& p : world.people) {
+    const double reach = world.path.robot_radius_m + p.spec().radius_m;
+    for (double t = 0.0; t <= duration_s; t += kStep_s) {
+      const Pose2D r = robot.poseAtTime(t);
+      const VerticalCylinder c = p.at(t);
+      if ((c.centre - Eigen::Vector2d(r.x, r.y)).norm() < reach) {
+        char at[96];
+        std::snprintf(at, sizeof(at), " at t = %.2f s near (%.2f, %.2f)", t, r.x, r.y);
+        throw ConfigError(file + ": " + p.spec().where + ": the person walks into the robot" + at);
+      }
+    }
+  }
 }
 
 GroundTruthMeta makeMeta(const World& world, const SimulatorOptions& options,
@@ -198,6 +229,7 @@ Simulator::Simulator(SimulatorOptions options) : options_(std::move(options)) {
     world_.sensors.cameras.enabled = false;
   }
   trajectory_ = std::make_unique<Trajectory>(world_.path, world_.source_file);
+  checkPeopleMissTheRobot(world_, *trajectory_, trajectory_->duration_s(), world_.source_file);
   if (world_.octomap) {
     voxels_ = std::make_unique<VoxelWorld>(loadVoxelWorld(*world_.octomap));
     voxel_caster_ = std::make_unique<VoxelRayCaster>(*voxels_);
@@ -207,6 +239,10 @@ Simulator::Simulator(SimulatorOptions options) : options_(std::move(options)) {
   }
   caster_ = std::make_unique<RayCaster>(world_);
   checkPathClearance(*caster_, *trajectory_, world_.path.robot_radius_m, world_.source_file);
+  for (const WalkingPerson& p : world_.people) {
+    checkPathClearance(*caster_, p.walk(), p.spec().radius_m,
+                       world_.source_file + ": " + p.spec().where, "the person", "walks");
+  }
 }
 
 Simulator::~Simulator() = default;
@@ -238,7 +274,7 @@ SimulationSummary Simulator::run() {
   }
   RawlogWriter writer(staged.rawlog, options_.format);
   GroundTruthRecorder gt;
-  CycleRunner runner(world_, *trajectory_, makeScanner(caster_.get(), voxel_caster_.get()),
+  CycleRunner runner(world_, *trajectory_, makeScanner(world_, caster_.get(), voxel_caster_.get()),
                      voxels_ == nullptr, options_, rig.get());
   const std::size_t n = cycleCount();
   ProgressLine progress("indoor-sim", options_.progress);

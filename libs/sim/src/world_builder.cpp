@@ -29,7 +29,14 @@ void addFreeRectangles(const WorldSpec& spec, detail::SceneAssembler& scene) {
   }
 }
 
-/// Surfaces keep their index as id; clutter and posters continue the numbering.
+void addPeople(const WorldSpec& spec, World& world) {
+  for (const PersonSpec& p : spec.people) {
+    world.people.emplace_back(p, spec.source_file);
+  }
+}
+
+/// Surfaces keep their index as id; clutter, posters and people continue the
+/// numbering.
 void assignIds(World& world) {
   int next = static_cast<int>(world.surfaces.size());
   for (Clutter& c : world.clutter) {
@@ -38,6 +45,9 @@ void assignIds(World& world) {
   for (Poster& p : world.posters) {
     p.id = next++;
     p.wall_id = world.surfaces[static_cast<std::size_t>(p.wall_index)].id;
+  }
+  for (WalkingPerson& p : world.people) {
+    p.id = next++;
   }
 }
 
@@ -51,8 +61,10 @@ World buildWorld(const WorldSpec& spec) {
   world.sensors = spec.sensors;
   world.noise = spec.noise;
   world.octomap = spec.octomap;
+  addPeople(spec, world);
   if (spec.octomap) {
-    return world;  // the geometry is the tree's, read by the simulator
+    assignIds(world);  // only people: the static geometry is the tree's, read by the simulator
+    return world;
   }
   detail::SceneAssembler scene(world);
   for (const CorridorSpec& corridor : spec.corridors) {

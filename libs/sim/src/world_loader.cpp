@@ -161,6 +161,19 @@ FreeRectangleSpec readRectangle(JsonReader r) {
   return s;
 }
 
+PersonSpec readPerson(JsonReader r) {
+  PersonSpec p;
+  p.where = r.path();
+  p.waypoints = r.points2("waypoints", 2);
+  p.speed_m_s = r.number("speed_m_s", p.speed_m_s, positive(10.0));
+  p.radius_m = r.number("radius_m", p.radius_m, positive(2.0));
+  p.height_m = r.number("height_m", p.height_m, positive(3.0));
+  p.start_s = r.number("start_s", p.start_s, closed(0.0, 1.0e6));
+  p.corner_radius_m = r.number("corner_radius_m", p.corner_radius_m, closed(0.0, 100.0));
+  r.finish();
+  return p;
+}
+
 /// The "octomap" block of a voxel world; a relative file is taken from the
 /// world file's directory.
 OctomapSpec readOctomap(JsonReader r, const std::string& world_file) {
@@ -207,8 +220,8 @@ void disableCamerasOfVoxelWorld(const nlohmann::json& root, const std::string& f
 WorldSpec parseWorldText(const std::string& text, const std::string& file_name) {
   const nlohmann::json root = detail::parseStrictJson(text, file_name);
   JsonReader r(root, file_name, "");
-  for (const char* key : {"name", "description", "corridors", "clutter", "rectangles", "octomap",
-                          "path", "sensors", "noise"}) {
+  for (const char* key : {"name", "description", "corridors", "clutter", "rectangles", "people",
+                          "octomap", "path", "sensors", "noise"}) {
     r.has(key);  // register every top-level key first: typos are reported as such
   }
   r.finish();
@@ -237,6 +250,9 @@ WorldSpec parseWorldText(const std::string& text, const std::string& file_name) 
   }
   for (JsonReader c : r.objects("rectangles")) {
     w.rectangles.push_back(readRectangle(c));
+  }
+  for (JsonReader p : r.objects("people")) {
+    w.people.push_back(readPerson(p));
   }
   if (!r.has("path")) {
     r.failMissing("path");

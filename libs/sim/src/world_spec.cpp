@@ -31,8 +31,8 @@ bool PathSpec::validate(std::string* why) const {
 
 const std::vector<std::string>& freeRectangleKinds() {
   static const std::vector<std::string> kinds = {
-      "wall",       "door",         "ceiling",  "floor", "jamb",    "room_wall",
-      "room_floor", "room_ceiling", "bulkhead", "panel", "cabinet", "other"};
+      "wall",         "door",     "ceiling", "floor",   "jamb",  "room_wall", "room_floor",
+      "room_ceiling", "bulkhead", "panel",   "cabinet", "glass", "other"};
   return kinds;
 }
 

@@ -61,12 +61,16 @@ struct GroundTruth {
   std::vector<GtCylinder> cylinders;
   std::vector<GtBox> boxes;
   std::vector<GtPoster> posters;
+  /// Ids of the people walking through (gt.json "people"): their hits lie on
+  /// no fixed object, so they count as clutter and are not distance-checked.
+  std::vector<int> people;
 
   /// hits[scan index][beam] = id hit by the true ray, -1 for nothing.
   std::map<std::int64_t, std::vector<int>> hits;
 
   const GtRectangle* surface(int id) const;
   bool isClutter(int id) const;
+  bool isPerson(int id) const;
   /// Distance from p to the object `id` (rectangle: closest point of the
   /// finite rectangle; cylinder / box: their surface). Negative id: NaN.
   double distance(int id, const Eigen::Vector3d& p) const;

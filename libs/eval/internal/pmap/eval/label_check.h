@@ -11,8 +11,9 @@ namespace pmap::eval {
 
 struct LabelCheck {
   std::size_t points = 0;         ///< mapped points with a ground-truth label entry
-  std::size_t labelled = 0;       ///< ... whose true ray hit an object
+  std::size_t labelled = 0;       ///< ... whose true ray hit a fixed object
   std::size_t unlabelled = 0;     ///< ... whose true ray hit nothing (should be ~0)
+  std::size_t on_people = 0;      ///< ... whose true ray hit a person walking through
   std::size_t within_3sigma = 0;  ///< labelled points within 3 sigma of their object
   double fraction_within_3sigma = 0;
   double median_m = 0;

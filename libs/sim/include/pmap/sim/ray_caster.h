@@ -39,6 +39,11 @@ class RayCaster {
                                double t_max, const std::vector<int>* candidates = nullptr,
                                double t_min = 1e-9) const;
 
+  /// Whether the hit is on a pane of glass (a surface of kind "glass").
+  bool isGlass(const SceneHit& hit) const {
+    return hit.type == ObjectType::kSurface && glass_[static_cast<std::size_t>(hit.index)] != 0;
+  }
+
   std::size_t objectCount() const { return spheres_.size(); }
   const World& world() const { return world_; }
 
@@ -52,6 +57,7 @@ class RayCaster {
 
   const World& world_;
   std::vector<Sphere> spheres_;  ///< surfaces first, then clutter
+  std::vector<char> glass_;      ///< per surface
 };
 
 }  // namespace pmap::sim

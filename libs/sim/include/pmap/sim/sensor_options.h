@@ -86,6 +86,14 @@ struct LaserErrorOptions {
   /// surfaces), [0, 1].
   double mixed_pixel_probability = 0.0;
   double mixed_pixel_jump_m = 0.3;
+  /// Glass (a rectangle of kind "glass"): a beam meeting a pane within
+  /// this many degrees of its normal returns from the pane (the specular
+  /// reflection), any other goes through it and returns from what lies
+  /// behind, degrees in [0, 90].
+  double glass_return_deg = 10.0;
+  /// ... and a beam that went through glass is lost with this probability
+  /// (the return too weak after two passes through the pane), [0, 1].
+  double glass_dropout_probability = 0.0;
   bool validate(std::string* why) const;
 };
 

@@ -1,7 +1,7 @@
 // The expanded world: every surface as a rectangle (with holes), posters apart
 // (texture only, geometrically part of their wall), clutter solids, plus the
 // path, sensor and noise options carried over from the world file. Ids are
-// unique across surfaces, clutter and posters (in that order). A voxel world
+// unique across surfaces, clutter, posters and people (in that order). A voxel world
 // has none of these: it names its OctoMap tree (`octomap`), which the
 // simulator reads (voxel_world.h).
 #pragma once
@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "pmap/sim/people.h"
 #include "pmap/sim/shapes.h"
 #include "pmap/sim/world_spec.h"
 
@@ -50,6 +51,7 @@ struct World {
   std::vector<Surface> surfaces;
   std::vector<Poster> posters;
   std::vector<Clutter> clutter;
+  std::vector<WalkingPerson> people;   ///< ids after the posters'
   std::optional<OctomapSpec> octomap;  ///< set: a voxel world
   PathSpec path;
   SensorOptions sensors;

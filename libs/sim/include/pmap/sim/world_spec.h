@@ -109,6 +109,20 @@ struct FreeRectangleSpec {
   std::array<Eigen::Vector3d, 4> corners;
 };
 
+/// A person walking to and fro along a polyline, as a vertical cylinder:
+/// standing at the first waypoint until `start_s`, then walking to the last
+/// one and back, again and again, at `speed_m_s` (corners rounded as the
+/// robot's path's, radius `corner_radius_m`). Seen by the lasers only.
+struct PersonSpec {
+  std::string where;
+  std::vector<Eigen::Vector2d> waypoints;  ///< metres (>= 2)
+  double speed_m_s = 1.2;
+  double radius_m = 0.25;  ///< of the cylinder standing for body and legs, metres
+  double height_m = 1.75;
+  double start_s = 0.0;  ///< seconds after the run's start
+  double corner_radius_m = 0.3;
+};
+
 /// The robot's path: driven at constant speed with circular corners.
 struct PathSpec {
   std::vector<Eigen::Vector2d> waypoints;  ///< metres (>= 2)
@@ -137,6 +151,7 @@ struct WorldSpec {
   std::vector<CorridorSpec> corridors;
   std::vector<ClutterSpec> clutter;
   std::vector<FreeRectangleSpec> rectangles;
+  std::vector<PersonSpec> people;      ///< moving, in rectangle and voxel worlds alike
   std::optional<OctomapSpec> octomap;  ///< set: a voxel world (no corridors, clutter, rectangles)
   PathSpec path;
   SensorOptions sensors;

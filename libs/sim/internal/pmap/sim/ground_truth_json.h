@@ -23,6 +23,9 @@ OrderedJson surfacesJson(const World& world);
 OrderedJson postersJson(const World& world, const std::string& images_dir_name);
 /// Every clutter object: id, kind, shape and its parameters.
 OrderedJson clutterJson(const World& world);
+/// The people walking through (kind "person"): each one's cylinder and walk,
+/// so that its position at any time can be computed again (people.h).
+OrderedJson peopleJson(const World& world);
 
 /// A voxel world's tree: the file read (as resolved and as written, size,
 /// FNV-1a hash), its type, resolution, nodes, occupied leaves and voxels, the

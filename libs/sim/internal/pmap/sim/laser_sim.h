@@ -43,6 +43,8 @@ struct BeamHit {
   /// The surface's unit normal at the hit; zero where unknown (voxels): no
   /// incidence effects there.
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+  /// The beam went through glass on its way (noise.laser.glass_*).
+  bool through_glass = false;
 };
 /// Casts one beam from `origin` along the unit `dir`; nullopt without a hit
 /// within `max_range_m`.
@@ -59,8 +61,17 @@ using BeamCaster = std::function<std::optional<BeamHit>(
 SimulatedScan simulateScan(const BeamCaster& cast, const Pose2D& robot, const LaserOptions& laser,
                            const NoiseOptions& noise, Rng& rng);
 /// The same against a World's surfaces and clutter (only the objects whose
-/// bounding sphere meets the scan plane are tried).
+/// bounding sphere meets the scan plane are tried) and its people where
+/// they are `t_s` seconds after the run's start. A beam goes through glass
+/// unless it meets the pane within noise.laser.glass_return_deg of its
+/// normal.
 SimulatedScan simulateScan(const RayCaster& caster, const Pose2D& robot, const LaserOptions& laser,
-                           const NoiseOptions& noise, Rng& rng);
+                           const NoiseOptions& noise, Rng& rng, double t_s = 0.0);
+/// One beam against a World as simulateScan(RayCaster) casts it: the static
+/// objects in `candidates`, glass and the people at `t_s`.
+std::optional<BeamHit> castBeam(const RayCaster& caster, const std::vector<int>& candidates,
+                                const NoiseOptions& noise, double t_s,
+                                const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
+                                double max_range_m);
 
 }  // namespace pmap::sim
