@@ -82,11 +82,25 @@ TEST(LabelMetrics, Issue16_PeopleCountAsClutter) {
     w.addPoint({1, 1.2, 0.5}, 50, -1);  // rejected
   }
   w.addPoint({1, 1.2, 0.5}, 50, 10);  // absorbed by the wall's map surface
+  w.addCylinder(40, {1, 1}, 0.2);
+  w.addPoint({1, 1.2, 0.5}, 40, -1);
+  w.addPoint({9, 9, 9}, -1, -1);  // a spurious return
+  w.addPoint({9, 9, 9}, -1, 10);
   w.surfaces = {surfaceWithNormal(10, {0, 1, 0})};
   const LabelMetrics m = metrics(w, {1});
-  EXPECT_EQ(m.clutter_points, 4u);
-  EXPECT_EQ(m.clutter_rejected, 3u);
-  EXPECT_NEAR(*m.precision, 100.0 / 101.0, 1e-12);
+  EXPECT_EQ(m.clutter_points, 5u);
+  EXPECT_EQ(m.clutter_rejected, 4u);
+  EXPECT_NEAR(*m.precision, 100.0 / 102.0, 1e-12);
+  // Where the points are, by what their true ray hit.
+  ASSERT_EQ(m.by_truth.size(), 4u);
+  EXPECT_EQ(m.by_truth.at("rectangle").points, 100u);
+  EXPECT_EQ(m.by_truth.at("rectangle").on_map_surface, 100u);
+  EXPECT_EQ(m.by_truth.at("person").points, 4u);
+  EXPECT_EQ(m.by_truth.at("person").on_map_surface, 1u);
+  EXPECT_EQ(m.by_truth.at("cylinder").points, 1u);
+  EXPECT_EQ(m.by_truth.at("cylinder").on_map_surface, 0u);
+  EXPECT_EQ(m.by_truth.at("no_object").points, 2u);
+  EXPECT_EQ(m.by_truth.at("no_object").on_map_surface, 1u);
 }
 
 TEST(LabelMetrics, NothingAssignedLeavesPrecisionUndefined) {

@@ -26,6 +26,26 @@ std::unordered_set<int> clutterIds(const GroundTruth& gt) {
 
 }  // namespace
 
+std::string truthClass(const GroundTruth& gt, int label) {
+  if (label < 0) {
+    return "no_object";
+  }
+  if (gt.surface(label) != nullptr) {
+    return "rectangle";
+  }
+  for (const GtCylinder& c : gt.cylinders) {
+    if (c.id == label) {
+      return "cylinder";
+    }
+  }
+  for (const GtBox& b : gt.boxes) {
+    if (b.id == label) {
+      return "box";
+    }
+  }
+  return gt.isPerson(label) ? "person" : "unknown";
+}
+
 LabelMetrics labelMetrics(const GroundTruth& gt, const std::vector<int>& point_surfaces,
                           const std::vector<int>& labels, const SurfaceMatches& matches,
                           const std::unordered_set<int>& eligible) {
@@ -37,6 +57,9 @@ LabelMetrics labelMetrics(const GroundTruth& gt, const std::vector<int>& point_s
     if (label == kNoLabelEntry) {
       continue;
     }
+    TruthCount& t = m.by_truth[truthClass(gt, label)];
+    ++t.points;
+    t.on_map_surface += surface >= 0 ? 1 : 0;
     const bool correct = surface >= 0 && label >= 0 && matches.matchedGt(surface) == label;
     if (eligible.count(label) != 0) {
       ++m.on_surface_points;

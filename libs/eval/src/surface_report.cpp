@@ -97,6 +97,11 @@ void addSurfaceKeys(const SurfaceEvaluation& e, const SurfaceEvalOptions& option
                          {"correct", l.correct_points}};
   doc["clutter_points"] = l.clutter_points;
   doc["clutter_rejected_fraction"] = optionalJson(l.clutter_rejected_fraction);
+  json by_truth = json::object();
+  for (const auto& [name, t] : l.by_truth) {
+    by_truth[name] = {{"points", t.points}, {"on_map_surface", t.on_map_surface}};
+  }
+  doc["points_by_truth"] = by_truth;
   doc["surface_options"] = {{"min_hits", options.min_hits},
                             {"min_label_share", options.match.min_label_share},
                             {"max_normal_angle_deg", options.match.max_normal_angle_deg}};

@@ -4,7 +4,9 @@
 #pragma once
 
 #include <cstddef>
+#include <map>
 #include <optional>
+#include <string>
 #include <unordered_set>
 #include <vector>
 
@@ -12,6 +14,18 @@
 #include "pmap/eval/surface_matching.h"
 
 namespace pmap::eval {
+
+/// Points of one kind of true hit, and how many a map surface holds.
+struct TruthCount {
+  std::size_t points = 0;
+  std::size_t on_map_surface = 0;
+};
+
+/// What a point's true ray hit, in the classes that say whether a plane
+/// could explain it: a ground-truth rectangle ("rectangle"), a box or a
+/// cylinder of clutter ("box", "cylinder"), a person walking through
+/// ("person"), nothing (a spurious or mixed return, "no_object").
+std::string truthClass(const GroundTruth& gt, int label);
 
 struct LabelMetrics {
   std::size_t on_surface_points = 0;  ///< points labelled with an eligible surface
@@ -24,6 +38,8 @@ struct LabelMetrics {
   std::optional<double> precision;    ///< correct / assigned; none if nothing assigned
   std::optional<double> f1;           ///< harmonic mean of the two (0 if both are 0)
   std::optional<double> clutter_rejected_fraction;  ///< none if no clutter points
+  /// Every labelled point by truthClass(): where the unexplained points are.
+  std::map<std::string, TruthCount> by_truth;
 };
 
 /// `point_surfaces`: the points' map surface ids; `labels`: their
