@@ -117,6 +117,57 @@ TEST(ConvexHull, RandomHullsContainEveryPointAndAreConvex) {
   }
 }
 
+/// Andrew's monotone chain over every point, no interior filter: the
+/// reference the filtered hulls must equal exactly.
+Points unfilteredHull(Points p) {
+  std::sort(p.begin(), p.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  p.erase(std::unique(p.begin(), p.end()), p.end());
+  auto turn = [](const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+  };
+  Points h(2 * p.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && turn(h[k - 2], h[k - 1], p[i]) <= 0)
+      --k;
+    h[k++] = p[i];
+  }
+  for (std::size_t i = p.size() - 1, t = k + 1; i-- > 0;) {
+    while (k >= t && turn(h[k - 2], h[k - 1], p[i]) <= 0)
+      --k;
+    h[k++] = p[i];
+  }
+  h.resize(k - 1);
+  return h;
+}
+
+// Above 64 points both hulls first drop the points strictly inside the
+// octagon of the extreme points (Akl-Toussaint): the hull must be the one of
+// every point, on random clouds and on grids full of ties and duplicates.
+TEST(ConvexHull, TheInteriorFilterKeepsTheHullOfEveryPoint) {
+  std::mt19937_64 rng(5);
+  std::uniform_int_distribution<int> cell(-6, 6);
+  for (int t = 0; t < 60; ++t) {
+    Points pts = randomPoints(rng, 65 + t * 20);
+    if (t % 2 == 1) {  // integer grid: equal projections, collinear edges, duplicates
+      for (auto& p : pts) {
+        p = Eigen::Vector2d(cell(rng), cell(rng) / 2);
+      }
+    }
+    const Points expected = unfilteredHull(pts);
+    EXPECT_EQ(convexHull(pts), expected) << "cloud " << t;
+    const std::vector<std::size_t> idx = convexHullIndices(pts);
+    ASSERT_EQ(idx.size(), expected.size()) << "cloud " << t;
+    for (std::size_t k = 0; k < idx.size(); ++k) {
+      EXPECT_EQ(pts[idx[k]], expected[k]) << "cloud " << t;
+      const auto first = std::find(pts.begin(), pts.end(), pts[idx[k]]) - pts.begin();
+      EXPECT_EQ(idx[k], static_cast<std::size_t>(first)) << "cloud " << t;  // first occurrence
+    }
+  }
+}
+
 TEST(MinAreaRectangle, EmptyInputGivesAZeroRectangleAtTheOrigin) {
   const Rect2D r = minAreaRectangle({});
   EXPECT_EQ(r.centre, Eigen::Vector2d::Zero());

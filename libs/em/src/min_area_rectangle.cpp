@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 namespace pmap::em {
 namespace {
@@ -41,15 +42,29 @@ namespace {
 
 // Akl-Toussaint: points strictly inside the octagon of the extreme points in
 // 8 directions cannot be on the hull; on a dense surface that is nearly all
-// of them, so the sort below sees only a thin boundary band.
-void dropInterior(std::vector<Eigen::Vector2d>& p) {
-  const Eigen::Vector2d dirs[8] = {{1, 0},  {1, 1},   {0, 1},  {-1, 1},
-                                   {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
+// of them, so the sort below sees only a thin boundary band. Returns the
+// indices of the other points, in order (the first point wins ties for an
+// extreme).
+std::vector<std::size_t> notInsideOctagon(const std::vector<Eigen::Vector2d>& p) {
+  // Directions (1, 0), (1, 1), (0, 1), (-1, 1) and their opposites: the
+  // projections x, x + y, y, y - x and their negatives. The opposite
+  // direction's maximum is the minimum (negation is exact).
   std::array<std::size_t, 8> ext{};
+  auto sums = [](const Eigen::Vector2d& q) {
+    return std::array<double, 4>{q.x(), q.x() + q.y(), q.y(), -q.x() + q.y()};
+  };
+  std::array<double, 4> hi = sums(p[0]);
+  std::array<double, 4> lo = hi;
   for (std::size_t i = 1; i < p.size(); ++i) {
-    for (int d = 0; d < 8; ++d) {
-      if (dirs[d].dot(p[i]) > dirs[d].dot(p[ext[static_cast<std::size_t>(d)]])) {
-        ext[static_cast<std::size_t>(d)] = i;
+    const std::array<double, 4> v = sums(p[i]);
+    for (std::size_t d = 0; d < 4; ++d) {
+      if (v[d] > hi[d]) {
+        hi[d] = v[d];
+        ext[d] = i;
+      }
+      if (v[d] < lo[d]) {
+        lo[d] = v[d];
+        ext[d + 4] = i;
       }
     }
   }
@@ -59,23 +74,47 @@ void dropInterior(std::vector<Eigen::Vector2d>& p) {
       poly.push_back(p[e]);
     }
   }
+  std::vector<std::size_t> kept;
   if (poly.size() < 3) {
-    return;
+    kept.resize(p.size());
+    std::iota(kept.begin(), kept.end(), std::size_t{0});
+    return kept;
   }
-  auto strictly_inside = [&](const Eigen::Vector2d& q) {
-    for (std::size_t k = 0; k < poly.size(); ++k) {
-      const Eigen::Vector2d& a = poly[k];
-      const Eigen::Vector2d& b = poly[(k + 1) % poly.size()];
-      if (a == b) {
-        continue;
-      }
-      if ((b.x() - a.x()) * (q.y() - a.y()) - (b.y() - a.y()) * (q.x() - a.x()) <= 0) {
-        return false;  // on or outside an edge (the octagon is counter-clockwise)
+  // The octagon's edges (counter-clockwise), as origin and direction.
+  struct Edge {
+    double ax, ay, dx, dy;
+  };
+  std::vector<Edge> edges;
+  for (std::size_t k = 0; k < poly.size(); ++k) {
+    const Eigen::Vector2d& a = poly[k];
+    const Eigen::Vector2d& b = poly[(k + 1) % poly.size()];
+    if (a != b) {
+      edges.push_back({a.x(), a.y(), b.x() - a.x(), b.y() - a.y()});
+    }
+  }
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double qx = p[i].x();
+    const double qy = p[i].y();
+    bool inside = true;
+    for (const Edge& e : edges) {
+      if (e.dx * (qy - e.ay) - e.dy * (qx - e.ax) <= 0) {
+        inside = false;  // on or outside an edge
+        break;
       }
     }
-    return true;
-  };
-  p.erase(std::remove_if(p.begin(), p.end(), strictly_inside), p.end());
+    if (!inside) {
+      kept.push_back(i);
+    }
+  }
+  return kept;
+}
+
+void dropInterior(std::vector<Eigen::Vector2d>& p) {
+  std::vector<Eigen::Vector2d> kept;
+  for (const std::size_t i : notInsideOctagon(p)) {
+    kept.push_back(p[i]);
+  }
+  p.swap(kept);
 }
 
 }  // namespace
@@ -190,43 +229,22 @@ namespace pmap::em {
 std::vector<std::size_t> convexHullIndices(const std::vector<Eigen::Vector2d>& points) {
   // Andrew's monotone chain over sorted indices, after the same interior
   // filter as convexHull.
-  std::vector<Eigen::Vector2d> kept = points;
-  if (kept.size() > 64) {
-    dropInterior(kept);
-  }
   std::vector<std::size_t> idx;
-  idx.reserve(kept.size());
-  {
-    // Map the kept points back to input indices (first occurrence wins).
-    std::vector<std::size_t> order(points.size());
-    for (std::size_t i = 0; i < order.size(); ++i) {
-      order[i] = i;
-    }
-    auto less = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-      return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-    };
-    if (kept.size() == points.size()) {
-      std::stable_sort(order.begin(), order.end(),
-                       [&](std::size_t x, std::size_t y) { return less(points[x], points[y]); });
-      idx = order;
-    } else {
-      std::vector<char> keep(points.size(), 0);
-      std::sort(kept.begin(), kept.end(), less);
-      for (std::size_t i = 0; i < points.size(); ++i) {
-        keep[i] = std::binary_search(kept.begin(), kept.end(), points[i], less) ? 1 : 0;
-      }
-      for (std::size_t i = 0; i < points.size(); ++i) {
-        if (keep[i]) {
-          idx.push_back(i);
-        }
-      }
-      std::stable_sort(idx.begin(), idx.end(),
-                       [&](std::size_t x, std::size_t y) { return less(points[x], points[y]); });
-    }
-    idx.erase(std::unique(idx.begin(), idx.end(),
-                          [&](std::size_t x, std::size_t y) { return points[x] == points[y]; }),
-              idx.end());
+  if (points.size() > 64) {
+    idx = notInsideOctagon(points);
+  } else {
+    idx.resize(points.size());
+    std::iota(idx.begin(), idx.end(), std::size_t{0});
   }
+  auto less = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  };
+  std::stable_sort(idx.begin(), idx.end(),
+                   [&](std::size_t x, std::size_t y) { return less(points[x], points[y]); });
+  // Equal points: the first occurrence is kept.
+  idx.erase(std::unique(idx.begin(), idx.end(),
+                        [&](std::size_t x, std::size_t y) { return points[x] == points[y]; }),
+            idx.end());
   if (idx.size() < 3) {
     return idx;
   }

@@ -23,7 +23,7 @@ int OnlineMStep::aliveCount() const {
 }
 
 Cause OnlineMStep::evaluate(std::size_t i) const {
-  std::vector<std::int32_t> cand;
+  std::vector<std::int32_t>& cand = candidates_;
   index_.candidates(store_.point(i), cand);
   Cause c;
   c.best_score = model_.outlierScore();

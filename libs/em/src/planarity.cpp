@@ -28,11 +28,16 @@ Planarity measurePlanarity(const std::vector<Eigen::Vector3d>& points,
     const double h = rect.normal.dot(d);
     Eigen::Matrix<double, 6, 1> row;
     row << a * a, a * b, b * b, a, b, 1.0;
-    ata.noalias() += row * row.transpose();
+    for (int r = 0; r < 6; ++r) {  // the lower triangle; the upper one is its mirror
+      for (int c = 0; c <= r; ++c) {
+        ata(r, c) += row(r) * row(c);
+      }
+    }
     atb += row * h;
     sum_h += h;
     sum_h2 += h * h;
   }
+  ata.triangularView<Eigen::StrictlyUpper>() = ata.transpose();
   const double n = static_cast<double>(members.size());
   const double variance =
       sum_h2 - sum_h * sum_h / n;  // about the mean (linear part ~0 after the fit)

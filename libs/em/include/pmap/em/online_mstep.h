@@ -91,6 +91,9 @@ class OnlineMStep {
   std::mt19937_64 rng_;
   std::vector<OnlineSurface> surfaces_;
   std::int32_t next_id_ = 0;
+  /// evaluate()'s candidate list, kept between calls: one allocation, not
+  /// one per measurement (the online EM runs on one thread).
+  mutable std::vector<std::int32_t> candidates_;
 };
 
 }  // namespace pmap::em
