@@ -57,7 +57,11 @@ OnlineUpdate OnlineEm::addScan(const std::vector<Eigen::Vector3d>& points,
   // Model selection, then the M-step of the active surfaces.
   u.changes = selection_.select(scans_);
   u.active_surfaces = mstep_.maximizeActive();
-  u.changes.split += selection_.cutPoorlyCovered(scans_);
+  // One structural change per scan: a poorly covered surface waits for the
+  // next scan when the selection turn changed the model in this one.
+  if (u.changes.fused + u.changes.split == 0) {
+    u.changes.split += selection_.cutPoorlyCovered(scans_);
+  }
   return u;
 }
 
