@@ -31,6 +31,9 @@ struct OnlineSurface {
   bool alive = true;
   bool trimmed = false;
   bool poorly_covered = false;  ///< the last M-step left most of the rectangle empty
+  /// Members when a cut of this poorly covered surface last found nothing
+  /// (0: never): the next try waits for min_support more (cutPoorlyCovered).
+  std::size_t cut_refused_members = 0;
 };
 
 /// The most likely cause of a measurement and how clearly it wins.
