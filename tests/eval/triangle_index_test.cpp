@@ -47,17 +47,16 @@ TEST(TriangleIndex, MatchesBruteForce) {
                     a + 0.3 * Vector3d(u(rng), u(rng), u(rng))});
   }
   TriangleIndexOptions o;
-  o.cell_m = 0.2;
   o.max_distance_m = 10;
   const TriangleIndex index(tris, o);
   for (int q = 0; q < 300; ++q) {
     const Vector3d p(u(rng), u(rng), u(rng));
-    EXPECT_NEAR(index.distance(p), bruteForceDistance(tris, p, 1e9), 1e-12);
+    EXPECT_EQ(index.distance(p), bruteForceDistance(tris, p, 10));  // the exact minimum
   }
 }
 
-// Queries around and far outside the triangles' box (the shells are cut to
-// the occupied cells' box): the same distances as brute force.
+// Queries around and far outside the triangles' box: the same distances as
+// brute force.
 TEST(TriangleIndex, QueriesOutsideTheTrianglesBoxMatchBruteForce) {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> u(-1, 1), far(-6, 6);
@@ -68,13 +67,33 @@ TEST(TriangleIndex, QueriesOutsideTheTrianglesBoxMatchBruteForce) {
                     a + 0.3 * Vector3d(u(rng), u(rng), u(rng))});
   }
   TriangleIndexOptions o;
-  o.cell_m = 0.25;
   o.max_distance_m = 3;
   const TriangleIndex index(tris, o);
   for (int q = 0; q < 2000; ++q) {
     const Vector3d p(far(rng), far(rng), far(rng));
-    EXPECT_NEAR(index.distance(p), bruteForceDistance(tris, p, o.max_distance_m), 1e-12)
-        << p.transpose();
+    EXPECT_EQ(index.distance(p), bruteForceDistance(tris, p, o.max_distance_m)) << p.transpose();
+  }
+}
+
+// Building-sized triangles (walls 20 m long beside 5 cm ones, as a ground
+// truth's rectangles and a map's fine triangles), many of them: still the
+// exact minimum.
+TEST(TriangleIndex, LargeAndSmallTrianglesMatchBruteForce) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Triangle3> tris;
+  for (int k = 0; k < 3000; ++k) {
+    const Vector3d a(10 * u(rng), 10 * u(rng), 1.5 + 1.5 * u(rng));
+    const double size = k % 50 == 0 ? 20.0 : 0.05;
+    tris.push_back({a, a + size * Vector3d(u(rng), u(rng), 0.1 * u(rng)),
+                    a + size * Vector3d(u(rng), 0.1 * u(rng), u(rng))});
+  }
+  TriangleIndexOptions o;
+  o.max_distance_m = 3;
+  const TriangleIndex index(tris, o);
+  for (int q = 0; q < 1000; ++q) {
+    const Vector3d p(14 * u(rng), 14 * u(rng), 1.5 + 4 * u(rng));
+    EXPECT_EQ(index.distance(p), bruteForceDistance(tris, p, o.max_distance_m)) << p.transpose();
   }
 }
 
@@ -88,10 +107,10 @@ TEST(TriangleIndex, FarAndEmptyAreCapped) {
 
 TEST(TriangleIndex, RejectsBadOptionsAndCorners) {
   TriangleIndexOptions o;
-  o.cell_m = 0;
+  o.max_distance_m = 0;
   std::string why;
   EXPECT_FALSE(o.validate(&why));
-  EXPECT_NE(why.find("cell_m"), std::string::npos);
+  EXPECT_NE(why.find("max_distance_m"), std::string::npos);
   EXPECT_THROW(TriangleIndex({kUnit}, o), std::invalid_argument);
   Triangle3 bad = kUnit;
   bad.b.x() = NAN;

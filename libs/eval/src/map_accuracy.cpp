@@ -17,7 +17,7 @@ std::int64_t cubeKey(const Eigen::Vector3d& p, double edge) {
   return part(c.x()) | part(c.y()) << 21 | part(c.z()) << 42;
 }
 
-/// Distance to the nearest ground-truth object: rectangles through a grid,
+/// Distance to the nearest ground-truth object: rectangles through a tree,
 /// clutter (cylinders, boxes: a handful) directly.
 class GroundTruthDistance {
  public:

@@ -1,6 +1,7 @@
 #include "pmap/eval/triangle_index.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -28,9 +29,7 @@ Eigen::Vector3d closestOnEdges(const Triangle3& t, const Eigen::Vector3d& p) {
   return *best;
 }
 
-constexpr int kBits = 21;
-constexpr std::int64_t kOffset = std::int64_t{1} << (kBits - 1);
-constexpr std::int64_t kMask = (std::int64_t{1} << kBits) - 1;
+constexpr std::uint32_t kLeafSize = 4;
 
 }  // namespace
 
@@ -68,18 +67,11 @@ Eigen::Vector3d closestPointOnTriangle(const Triangle3& t, const Eigen::Vector3d
 }
 
 bool TriangleIndexOptions::validate(std::string* why) const {
-  const auto fail = [why](const char* rule) {
-    if (why != nullptr)
-      *why = rule;
-    return false;
-  };
-  if (!(cell_m > 0.0 && std::isfinite(cell_m)))
-    return fail("cell_m must be > 0");
   if (!(max_distance_m > 0.0 && std::isfinite(max_distance_m))) {
-    return fail("max_distance_m must be > 0");
+    if (why != nullptr)
+      *why = "max_distance_m must be > 0";
+    return false;
   }
-  if (max_distance_m / cell_m > 1000.0)
-    return fail("max_distance_m / cell_m must be <= 1000");
   return true;
 }
 
@@ -89,83 +81,86 @@ TriangleIndex::TriangleIndex(std::vector<Triangle3> triangles, const TriangleInd
   if (!options_.validate(&why)) {
     throw std::invalid_argument("TriangleIndex: " + why);
   }
-  for (std::uint32_t k = 0; k < triangles_.size(); ++k) {
-    insert(k);
-  }
-}
-
-TriangleIndex::Key TriangleIndex::key(std::int64_t x, std::int64_t y, std::int64_t z) const {
-  return ((x + kOffset) & kMask) | ((y + kOffset) & kMask) << kBits |
-         ((z + kOffset) & kMask) << (2 * kBits);
-}
-
-Eigen::Array3i TriangleIndex::cellOf(const Eigen::Vector3d& p) const {
-  return (p.array() / options_.cell_m).floor().cast<int>();
-}
-
-void TriangleIndex::insert(std::uint32_t k) {
-  const Triangle3& t = triangles_[k];
-  if (!t.a.allFinite() || !t.b.allFinite() || !t.c.allFinite()) {
-    throw std::invalid_argument("TriangleIndex: a corner is not finite");
-  }
-  const Eigen::Array3i lo = cellOf(t.a.cwiseMin(t.b).cwiseMin(t.c));
-  const Eigen::Array3i hi = cellOf(t.a.cwiseMax(t.b).cwiseMax(t.c));
-  lo_ = k == 0 ? lo : lo_.min(lo);
-  hi_ = k == 0 ? hi : hi_.max(hi);
-  for (int x = lo.x(); x <= hi.x(); ++x) {
-    for (int y = lo.y(); y <= hi.y(); ++y) {
-      for (int z = lo.z(); z <= hi.z(); ++z) {
-        cells_[key(x, y, z)].push_back(k);
-      }
+  boxes_.reserve(triangles_.size());
+  for (const Triangle3& t : triangles_) {
+    if (!t.a.allFinite() || !t.b.allFinite() || !t.c.allFinite()) {
+      throw std::invalid_argument("TriangleIndex: a corner is not finite");
     }
+    Eigen::AlignedBox3d box(t.a);
+    box.extend(t.b).extend(t.c);
+    boxes_.push_back(box);
+  }
+  order_.resize(triangles_.size());
+  for (std::uint32_t k = 0; k < order_.size(); ++k) {
+    order_[k] = k;
+  }
+  if (!triangles_.empty()) {
+    nodes_.reserve(2 * triangles_.size() / kLeafSize + 2);
+    build(0, static_cast<std::uint32_t>(triangles_.size()));
   }
 }
 
-double TriangleIndex::scanCell(const Eigen::Array3i& c, const Eigen::Vector3d& p,
-                               double best) const {
-  const auto it = cells_.find(key(c.x(), c.y(), c.z()));
-  if (it == cells_.end()) {
-    return best;
+// The node over order_[first, first + count): its box, then (above
+// kLeafSize triangles) the two halves split at the median of the boxes'
+// centres along the box's longest side.
+std::int32_t TriangleIndex::build(std::uint32_t first, std::uint32_t count) {
+  const auto id = static_cast<std::int32_t>(nodes_.size());
+  nodes_.emplace_back();
+  Eigen::AlignedBox3d box = boxes_[order_[first]];
+  for (std::uint32_t k = first + 1; k < first + count; ++k) {
+    box.extend(boxes_[order_[k]]);
   }
-  for (const std::uint32_t k : it->second) {
-    best = std::min(best, (closestPointOnTriangle(triangles_[k], p) - p).norm());
+  nodes_[static_cast<std::size_t>(id)].box = box;
+  if (count <= kLeafSize) {
+    nodes_[static_cast<std::size_t>(id)].first = first;
+    nodes_[static_cast<std::size_t>(id)].count = count;
+    return id;
   }
-  return best;
+  Eigen::Index axis = 0;
+  box.sizes().maxCoeff(&axis);
+  const std::uint32_t half = count / 2;
+  const auto begin = order_.begin() + first;
+  std::nth_element(begin, begin + half, begin + count, [&](std::uint32_t a, std::uint32_t b) {
+    const double ca = boxes_[a].center()[axis], cb = boxes_[b].center()[axis];
+    return ca < cb || (ca == cb && a < b);
+  });
+  const std::int32_t left = build(first, half);
+  const std::int32_t right = build(first + half, count - half);
+  nodes_[static_cast<std::size_t>(id)].left = left;
+  nodes_[static_cast<std::size_t>(id)].right = right;
+  return id;
 }
 
 double TriangleIndex::distance(const Eigen::Vector3d& p) const {
   double best = options_.max_distance_m;
-  if (triangles_.empty()) {
+  if (nodes_.empty()) {
     return best;
   }
-  const Eigen::Array3i c = cellOf(p);
-  const int max_ring = static_cast<int>(std::ceil(options_.max_distance_m / options_.cell_m)) + 1;
-  // Offsets that stay inside the box of the occupied cells (a far query,
-  // such as a map surface across solid space, would otherwise look up
-  // thousands of empty cells above and below the building).
-  const Eigen::Array3i from = lo_ - c, to = hi_ - c;
-  for (int r = 0; r <= max_ring; ++r) {
-    // Cells of shell r (Chebyshev distance r from c) inside that box.
-    const int z0 = std::max(-r, from.z()), z1 = std::min(r, to.z());
-    for (int dx = std::max(-r, from.x()); dx <= std::min(r, to.x()); ++dx) {
-      for (int dy = std::max(-r, from.y()); dy <= std::min(r, to.y()); ++dy) {
-        if (std::abs(dx) == r || std::abs(dy) == r) {
-          for (int dz = z0; dz <= z1; ++dz) {
-            best = scanCell(c + Eigen::Array3i(dx, dy, dz), p, best);
-          }
-        } else {
-          for (const int dz : {-r, r}) {  // the shell's top and bottom (r > 0 here)
-            if (dz >= z0 && dz <= z1) {
-              best = scanCell(c + Eigen::Array3i(dx, dy, dz), p, best);
-            }
-          }
-        }
+  // Depth-first: at most one pending sibling per level, and the halving
+  // split keeps the depth under 33 for any 32-bit triangle count.
+  std::array<std::int32_t, 96> stack{};
+  std::size_t size = 0;
+  stack[size++] = 0;
+  while (size > 0) {
+    const Node& n = nodes_[static_cast<std::size_t>(stack[--size])];
+    // Every triangle in the box is at least this far: nothing to gain (the
+    // margin covers rounding, so that the result is the exact minimum).
+    if (n.box.squaredExteriorDistance(p) > best * best * (1.0 + 1e-9)) {
+      continue;
+    }
+    if (n.left < 0) {
+      for (std::uint32_t k = n.first; k < n.first + n.count; ++k) {
+        const Triangle3& t = triangles_[order_[k]];
+        best = std::min(best, (closestPointOnTriangle(t, p) - p).norm());
       }
+      continue;
     }
-    // Every cell of a later shell is at least r cells away.
-    if (best <= r * options_.cell_m) {
-      break;
-    }
+    // The nearer child last, so that it is searched first.
+    const Node& l = nodes_[static_cast<std::size_t>(n.left)];
+    const Node& r = nodes_[static_cast<std::size_t>(n.right)];
+    const bool left_nearer = l.box.squaredExteriorDistance(p) <= r.box.squaredExteriorDistance(p);
+    stack[size++] = left_nearer ? n.right : n.left;
+    stack[size++] = left_nearer ? n.left : n.right;
   }
   return best;
 }

@@ -1,12 +1,14 @@
 // Nearest-triangle distances for the accuracy figures (map_accuracy.h): a
-// uniform grid over triangles (points are triangles with three equal
-// corners), searched in growing shells of cells around the query.
+// bounding-box tree over the triangles (points are triangles with three
+// equal corners), searched nearest box first; a box no nearer than the best
+// distance so far is skipped with all it holds. The distance is the exact
+// minimum over every triangle (capped), whatever the tree's shape.
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace pmap::eval {
@@ -22,7 +24,6 @@ struct Triangle3 {
 Eigen::Vector3d closestPointOnTriangle(const Triangle3& t, const Eigen::Vector3d& p);
 
 struct TriangleIndexOptions {
-  double cell_m = 0.25;         ///< grid cell edge (m)
   double max_distance_m = 3.0;  ///< search radius; farther distances are reported as this (m)
   bool validate(std::string* why) const;
 };
@@ -39,17 +40,21 @@ class TriangleIndex {
   std::size_t size() const { return triangles_.size(); }
 
  private:
-  using Key = std::int64_t;
-  Key key(std::int64_t x, std::int64_t y, std::int64_t z) const;
-  Eigen::Array3i cellOf(const Eigen::Vector3d& p) const;
-  void insert(std::uint32_t k);
-  double scanCell(const Eigen::Array3i& c, const Eigen::Vector3d& p, double best) const;
+  /// A box of the tree: its children, or (leaf) a range of order_.
+  struct Node {
+    Eigen::AlignedBox3d box;
+    std::int32_t left = -1;  ///< -1: a leaf
+    std::int32_t right = -1;
+    std::uint32_t first = 0;  ///< leaf: order_[first, first + count)
+    std::uint32_t count = 0;
+  };
+  std::int32_t build(std::uint32_t first, std::uint32_t count);
 
   std::vector<Triangle3> triangles_;
   TriangleIndexOptions options_;
-  std::unordered_map<Key, std::vector<std::uint32_t>> cells_;
-  /// The box of the cells that hold a triangle (none outside it).
-  Eigen::Array3i lo_ = Eigen::Array3i::Constant(1), hi_ = Eigen::Array3i::Constant(0);
+  std::vector<Eigen::AlignedBox3d> boxes_;  ///< per triangle
+  std::vector<std::uint32_t> order_;        ///< triangle indices, grouped by leaf
+  std::vector<Node> nodes_;                 ///< nodes_[0]: the root
 };
 
 }  // namespace pmap::eval
