@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 
 #include "pmap/common/error.h"
@@ -79,9 +80,11 @@ TEST(People, Issue16_TheLasersSeeAPersonWhereItIsAtTheScansTime) {
 }
 
 /// The message the Simulator throws for `world` (or "" if none).
-std::string simulatorError(const std::string& name, const std::string& world) {
+std::string simulatorError(const std::string& name, const std::string& world,
+                           std::optional<double> duration_s = std::nullopt) {
   const std::filesystem::path dir = test::freshDir(name);
   SimulatorOptions o;
+  o.duration_s = duration_s;
   o.world_file = test::writeText(dir / "w.json", world);
   o.out_prefix = (dir / "run").string();
   o.cameras = false;
@@ -102,6 +105,13 @@ TEST(People, Issue16_APersonWalkingIntoTheRobotIsRefused) {
   EXPECT_NE(e.find("w.json: people[0]: the person walks into the robot at t = "), std::string::npos)
       << e;
   EXPECT_EQ(simulatorError("people_ok", corridorJson(kWalker, kPath)), "");
+  // A run that ends before they meet (--duration) is fine.
+  EXPECT_EQ(
+      simulatorError(
+          "people_early",
+          corridorJson(R"([{"waypoints": [[16, -0.6], [2, -0.6]], "speed_m_s": 1.0}])", kPath),
+          3.0),
+      "");
 }
 
 TEST(People, Issue16_APersonWalkingThroughAWallIsRefused) {

@@ -1,5 +1,6 @@
 #include "pmap/sim/people.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pmap::sim {

@@ -229,7 +229,11 @@ Simulator::Simulator(SimulatorOptions options) : options_(std::move(options)) {
     world_.sensors.cameras.enabled = false;
   }
   trajectory_ = std::make_unique<Trajectory>(world_.path, world_.source_file);
-  checkPeopleMissTheRobot(world_, *trajectory_, trajectory_->duration_s(), world_.source_file);
+  // Over the part of the path this run drives (--duration may end it early).
+  checkPeopleMissTheRobot(
+      world_, *trajectory_,
+      std::min(trajectory_->duration_s(), options_.duration_s.value_or(trajectory_->duration_s())),
+      world_.source_file);
   if (world_.octomap) {
     voxels_ = std::make_unique<VoxelWorld>(loadVoxelWorld(*world_.octomap));
     voxel_caster_ = std::make_unique<VoxelRayCaster>(*voxels_);
