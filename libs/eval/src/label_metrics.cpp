@@ -1,5 +1,7 @@
 #include "pmap/eval/label_metrics.h"
 
+#include <unordered_map>
+
 #include "pmap/eval/point_labels.h"
 
 namespace pmap::eval {
@@ -51,13 +53,18 @@ LabelMetrics labelMetrics(const GroundTruth& gt, const std::vector<int>& point_s
                           const std::unordered_set<int>& eligible) {
   const std::unordered_set<int> clutter = clutterIds(gt);
   LabelMetrics m;
+  std::unordered_map<int, TruthCount*> truth_of;  // std::map's elements stay put
   for (std::size_t i = 0; i < labels.size(); ++i) {
     const int label = labels[i];
     const int surface = point_surfaces[i];
     if (label == kNoLabelEntry) {
       continue;
     }
-    TruthCount& t = m.by_truth[truthClass(gt, label)];
+    auto slot = truth_of.find(label);  // one look-up of each label's class
+    if (slot == truth_of.end()) {
+      slot = truth_of.emplace(label, &m.by_truth[truthClass(gt, label)]).first;
+    }
+    TruthCount& t = *slot->second;
     ++t.points;
     t.on_map_surface += surface >= 0 ? 1 : 0;
     const bool correct = surface >= 0 && label >= 0 && matches.matchedGt(surface) == label;

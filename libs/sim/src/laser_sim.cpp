@@ -55,6 +55,35 @@ std::optional<double> acrossEdge(const SimulatedScan& scan, std::size_t i, doubl
   return std::nullopt;
 }
 
+// One beam against a World: the static objects in `candidates`, glass (a
+// beam goes through unless it meets the pane within glass_return_deg of its
+// normal) and the people where they are at the scan's time.
+std::optional<BeamHit> castBeam(const RayCaster& caster, const std::vector<int>& candidates,
+                                const PeopleAt& people, const NoiseOptions& noise,
+                                const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
+                                double max_range_m) {
+  constexpr int kMaxPanes = 8;  // a beam through more panes than this returns from the last
+  const double cos_return = std::cos(noise.laser.glass_return_deg * M_PI / 180.0);
+  double t_min = 1e-9;
+  bool through_glass = false;
+  for (int pane = 0;; ++pane) {
+    const std::optional<SceneHit> hit = caster.cast(origin, dir, max_range_m, &candidates, t_min);
+    const double t_max = hit ? hit->t : max_range_m;
+    if (const auto person = people.cast(origin, dir, t_min, t_max)) {
+      return BeamHit{person->hit.t, person->id, person->hit.normal, through_glass};
+    }
+    if (!hit) {
+      return std::nullopt;
+    }
+    const bool specular = std::abs(dir.dot(hit->normal)) >= cos_return;
+    if (!caster.isGlass(*hit) || specular || pane == kMaxPanes) {
+      return BeamHit{hit->t, hit->id, hit->normal, through_glass};
+    }
+    through_glass = true;
+    t_min = hit->t + 1e-6;
+  }
+}
+
 }  // namespace
 
 SimulatedScan simulateScan(const BeamCaster& cast, const Pose2D& robot, const LaserOptions& laser,
@@ -121,43 +150,16 @@ SimulatedScan simulateScan(const BeamCaster& cast, const Pose2D& robot, const La
   return scan;
 }
 
-std::optional<BeamHit> castBeam(const RayCaster& caster, const std::vector<int>& candidates,
-                                const NoiseOptions& noise, double t_s,
-                                const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
-                                double max_range_m) {
-  constexpr int kMaxPanes = 8;  // a beam through more panes than this returns from the last
-  const double cos_return = std::cos(noise.laser.glass_return_deg * M_PI / 180.0);
-  const std::vector<WalkingPerson>& people = caster.world().people;
-  double t_min = 1e-9;
-  bool through_glass = false;
-  for (int pane = 0;; ++pane) {
-    const std::optional<SceneHit> hit = caster.cast(origin, dir, max_range_m, &candidates, t_min);
-    const double t_max = hit ? hit->t : max_range_m;
-    if (const auto person = castPeople(people, t_s, origin, dir, t_min, t_max)) {
-      const int id = people[static_cast<std::size_t>(person->index)].id;
-      return BeamHit{person->hit.t, id, person->hit.normal, through_glass};
-    }
-    if (!hit) {
-      return std::nullopt;
-    }
-    const bool specular = std::abs(dir.dot(hit->normal)) >= cos_return;
-    if (!caster.isGlass(*hit) || specular || pane == kMaxPanes) {
-      return BeamHit{hit->t, hit->id, hit->normal, through_glass};
-    }
-    through_glass = true;
-    t_min = hit->t + 1e-6;
-  }
-}
-
 SimulatedScan simulateScan(const RayCaster& caster, const Pose2D& robot, const LaserOptions& laser,
                            const NoiseOptions& noise, Rng& rng, double t_s) {
   const RigidTransform sensor = laserToWorld(robot, laser);
   // Every beam lies in the sensor's x-y plane: only objects meeting it matter.
   const std::vector<int> candidates =
       caster.selectNearPlane(sensor.translation, sensor.rotation.col(2), laser.max_range_m);
+  const PeopleAt people(caster.world().people, t_s);
   const BeamCaster cast = [&](const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
                               double max_range_m) {
-    return castBeam(caster, candidates, noise, t_s, origin, dir, max_range_m);
+    return castBeam(caster, candidates, people, noise, origin, dir, max_range_m);
   };
   return simulateScan(cast, robot, laser, noise, rng);
 }

@@ -30,15 +30,22 @@ VerticalCylinder WalkingPerson::at(double t_s) const {
   return VerticalCylinder{Eigen::Vector2d(p.x, p.y), spec_.radius_m, 0.0, spec_.height_m};
 }
 
-std::optional<PersonHit> castPeople(const std::vector<WalkingPerson>& people, double t_s,
-                                    const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
-                                    double t_min, double t_max) {
-  std::optional<PersonHit> best;
-  for (std::size_t i = 0; i < people.size(); ++i) {
+PeopleAt::PeopleAt(const std::vector<WalkingPerson>& people, double t_s) {
+  for (const WalkingPerson& p : people) {
+    cylinders_.push_back(p.at(t_s));
+    ids_.push_back(p.id);
+  }
+}
+
+std::optional<PeopleAt::Hit> PeopleAt::cast(const Eigen::Vector3d& origin,
+                                            const Eigen::Vector3d& dir, double t_min,
+                                            double t_max) const {
+  std::optional<Hit> best;
+  for (std::size_t i = 0; i < cylinders_.size(); ++i) {
     const double limit = best ? best->hit.t : t_max;
-    if (const auto h = intersectCylinder(people[i].at(t_s), origin, dir, t_min, limit)) {
+    if (const auto h = intersectCylinder(cylinders_[i], origin, dir, t_min, limit)) {
       if (!best || h->t < best->hit.t) {
-        best = PersonHit{static_cast<int>(i), *h};
+        best = Hit{ids_[i], *h};
       }
     }
   }

@@ -125,15 +125,15 @@ Scanner makeScanner(const World& world, const RayCaster* rectangles,
                     const VoxelRayCaster* voxel_caster) {
   if (voxel_caster != nullptr) {
     const VoxelRayCaster& voxels = *voxel_caster;
-    const std::vector<WalkingPerson>& people = world.people;
-    return [&voxels, &people](const Pose2D& robot, const LaserOptions& laser,
-                              const NoiseOptions& noise, Rng& rng, double t_s) {
+    return [&voxels, &world](const Pose2D& robot, const LaserOptions& laser,
+                             const NoiseOptions& noise, Rng& rng, double t_s) {
+      const PeopleAt people(world.people, t_s);
       const BeamCaster cast = [&](const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
                                   double max_range_m) -> std::optional<BeamHit> {
         const std::optional<VoxelHit> hit = voxels.cast(origin, dir, max_range_m);
         const double t_max = hit ? hit->t : max_range_m;
-        if (const auto p = castPeople(people, t_s, origin, dir, 1e-9, t_max)) {
-          return BeamHit{p->hit.t, people[static_cast<std::size_t>(p->index)].id, p->hit.normal};
+        if (const auto p = people.cast(origin, dir, 1e-9, t_max)) {
+          return BeamHit{p->hit.t, p->id, p->hit.normal};
         }
         return hit ? std::optional<BeamHit>(BeamHit{hit->t, -1}) : std::nullopt;
       };

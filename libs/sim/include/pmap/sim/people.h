@@ -32,14 +32,24 @@ class WalkingPerson {
   Trajectory walk_;
 };
 
-/// The nearest of `people` hit by the ray origin + t dir at time `t_s`, with t
-/// in (t_min, t_max]: the person's index, t and the cylinder's normal there.
-struct PersonHit {
-  int index = -1;
-  ShapeHit hit;
+/// Where the people are at one time: their cylinders, computed once for all
+/// the beams of a scan.
+class PeopleAt {
+ public:
+  PeopleAt(const std::vector<WalkingPerson>& people, double t_s);
+
+  /// The nearest person hit by the ray origin + t dir with t in
+  /// (t_min, t_max]: the person's id, t and the cylinder's normal there.
+  struct Hit {
+    int id = -1;
+    ShapeHit hit;
+  };
+  std::optional<Hit> cast(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir, double t_min,
+                          double t_max) const;
+
+ private:
+  std::vector<VerticalCylinder> cylinders_;
+  std::vector<int> ids_;
 };
-std::optional<PersonHit> castPeople(const std::vector<WalkingPerson>& people, double t_s,
-                                    const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
-                                    double t_min, double t_max);
 
 }  // namespace pmap::sim

@@ -67,11 +67,4 @@ SimulatedScan simulateScan(const BeamCaster& cast, const Pose2D& robot, const La
 /// normal.
 SimulatedScan simulateScan(const RayCaster& caster, const Pose2D& robot, const LaserOptions& laser,
                            const NoiseOptions& noise, Rng& rng, double t_s = 0.0);
-/// One beam against a World as simulateScan(RayCaster) casts it: the static
-/// objects in `candidates`, glass and the people at `t_s`.
-std::optional<BeamHit> castBeam(const RayCaster& caster, const std::vector<int>& candidates,
-                                const NoiseOptions& noise, double t_s,
-                                const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
-                                double max_range_m);
-
 }  // namespace pmap::sim
