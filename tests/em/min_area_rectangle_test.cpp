@@ -219,6 +219,37 @@ TEST(MinAreaRectangle, RotatedRectanglesRecoverTheirTrueArea) {
   }
 }
 
+// A hull that convexHull() already returned is not computed again
+// (coverage cuts, surface fits): the same rectangle to the bit as computing
+// it again, on random
+// clouds, grids full of collinear points and ties, thin strips, and sets of
+// one or two distinct points.
+TEST(MinAreaRectangle, OfAHullIsTheRectangleOfItsPoints) {
+  std::mt19937_64 rng(17);
+  std::uniform_int_distribution<int> cell(-5, 5);
+  for (int t = 0; t < 300; ++t) {
+    Points pts = randomPoints(rng, 1 + t % 150);
+    if (t % 3 == 1) {
+      for (auto& p : pts) {
+        p = Eigen::Vector2d(cell(rng), cell(rng) / 3);
+      }
+    } else if (t % 3 == 2) {
+      for (auto& p : pts) {
+        p = Eigen::Vector2d(p.x(), 1e-3 * p.y());
+      }
+    }
+    const Points hull = convexHull(pts);
+    EXPECT_EQ(convexHull(hull), hull) << "set " << t;  // the hull of a hull is itself
+    const Rect2D a = minAreaRectangle(hull);           // which computes the hull again
+    const Rect2D b = minAreaRectangleOfHull(hull);
+    EXPECT_EQ(a.centre, b.centre) << "set " << t;
+    EXPECT_EQ(a.axis, b.axis) << "set " << t;
+    EXPECT_EQ(a.half_a, b.half_a) << "set " << t;
+    EXPECT_EQ(a.half_b, b.half_b) << "set " << t;
+  }
+  EXPECT_EQ(minAreaRectangleOfHull({}).area(), 0.0);
+}
+
 // Eq. (29) is solved exactly: equal to the brute-force oracle on many random
 // sets, never worse than the paper's 1-degree probing. Probing misses the
 // optimal orientation by up to 0.5 deg; turning an a x b rectangle (a >= b)

@@ -133,7 +133,7 @@ RefitSavings refitSavings(const std::vector<Eigen::Vector2d>& uv,
       hi = hi.cwiseMax(q);
     }
     const double box = (hi - lo).prod();
-    return std::max(0.0, box - minAreaRectangle(hull).area()) / cell_area;
+    return std::max(0.0, box - minAreaRectangleOfHull(hull).area()) / cell_area;
   };
   RefitSavings out;
   out.low.assign(lines + 1, 0.0);

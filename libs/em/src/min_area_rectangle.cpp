@@ -149,10 +149,13 @@ std::vector<Eigen::Vector2d> convexHull(std::vector<Eigen::Vector2d> p) {
 }
 
 Rect2D minAreaRectangle(const std::vector<Eigen::Vector2d>& points) {
-  if (points.empty()) {
+  return points.empty() ? Rect2D{} : minAreaRectangleOfHull(convexHull(points));
+}
+
+Rect2D minAreaRectangleOfHull(const std::vector<Eigen::Vector2d>& hull) {
+  if (hull.empty()) {
     return {};
   }
-  const std::vector<Eigen::Vector2d> hull = convexHull(points);
   if (hull.size() == 1) {
     Rect2D r;
     r.centre = hull[0];

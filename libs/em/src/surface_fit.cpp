@@ -87,7 +87,7 @@ FitStatus fitRectangleWithHull(const std::vector<Eigen::Vector3d>& points,
     hull.push_back(members[k]);
     hull_uv.push_back(uv[k]);
   }
-  const Rect2D r = minAreaRectangle(hull_uv.size() >= 3 ? hull_uv : uv);
+  const Rect2D r = hull_uv.size() >= 3 ? minAreaRectangleOfHull(hull_uv) : minAreaRectangle(uv);
   rect.centre += u * r.centre.x() + v * r.centre.y();
   rect.axis_u = (u * r.axis.x() + v * r.axis.y()).normalized();
   rect.half_u = r.half_a;

@@ -32,6 +32,10 @@ std::vector<std::size_t> convexHullIndices(const std::vector<Eigen::Vector2d>& p
 /// coincident) input: a zero-width rectangle along the points.
 Rect2D minAreaRectangle(const std::vector<Eigen::Vector2d>& points);
 
+/// The same for a hull as convexHull() returns it (counter-clockwise, no
+/// collinear points): its rectangle without computing the hull again.
+Rect2D minAreaRectangleOfHull(const std::vector<Eigen::Vector2d>& hull);
+
 /// The paper's approximation: the tightest axis-aligned box over orientations
 /// probed every `step_deg` degrees in [0, 90).
 Rect2D probedMinAreaRectangle(const std::vector<Eigen::Vector2d>& points, double step_deg = 1.0);
