@@ -2,7 +2,7 @@
 # Regenerates doc/peer-benchmark.md: issue 16's peer benchmark. PCL's
 # SACSegmentation and region growing and CGAL's Efficient RANSAC and region
 # growing beside planar-mapper, on the same clouds, with one parameter rule
-# for all (peer-bench's header): the points of three simulated worlds mapped
+# for all (peer-bench's header): the points of four simulated worlds mapped
 # with their true poses, the cluttered one at two noise levels (scored against
 # the simulator's ground-truth planes)
 # and MRPT's Kinect frame (no ground truth: planes and time only).
@@ -67,7 +67,8 @@ PY
 
 # Simulated clouds: NAME:WORLD:SIGMA. Ours uses config/default.ini for all:
 # the rule sets the sigma, the only key config/sigma5.ini changes.
-for c in default:default:0.02 office:office:0.02 cluttered:cluttered:0.02 cluttered5:cluttered:0.05; do
+for c in default:default:0.02 office:office:0.02 cluttered:cluttered:0.02 cluttered5:cluttered:0.05 \
+  glass-office:glass-office:0.02; do
   IFS=: read -r name w s <<< "$c"
   "$bin/indoor-sim" --world "config/worlds/$w.json" --seed 1 --sigma "$s" --no-cameras --quiet \
     --out "$work/$name" 2>/dev/null

@@ -14,6 +14,9 @@ CLOUDS = [
                   "shelves and cabinets, ceiling clutter, lost, spurious and mixed returns; "
                   "doc/real-geometry.md), σ 2 cm, true poses"),
     ("cluttered5", "The `cluttered` world at σ 5 cm, true poses"),
+    ("glass-office", "Simulated `glass-office` world (config/worlds/glass-office.json: rooms "
+                     "behind glass, two people walking, furniture and ceiling clutter, the "
+                     "cluttered world's laser errors; doc/real-geometry.md), σ 2 cm, true poses"),
     ("kinect", "MRPT's Kinect frame (`/usr/share/mrpt/datasets/tests_rgbd.rawlog`, Debian "
                "mrpt-common): no ground truth, so no scores"),
 ]
@@ -21,6 +24,7 @@ SHIPPED = {"default": ("ours-all", "config/default.ini"),
            "office": ("ours-all", "config/default.ini"),
            "cluttered": ("ours-all", "config/default.ini"),
            "cluttered5": ("ours-all", "config/default.ini"),
+           "glass-office": ("ours-all", "config/default.ini"),
            "kinect": ("ours-coarse", "config/mrpt-rgbd.ini")}
 NAMES = [
     ("ours-all", "ours, every point in every iteration (`coarse_points = 0`)"),
