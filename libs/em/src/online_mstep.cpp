@@ -93,6 +93,11 @@ std::vector<std::int32_t> OnlineMStep::sampleMembers(std::int32_t j, int cap) {
 
 std::vector<std::int32_t> OnlineMStep::rectangleBasis(std::int32_t j) {
   std::vector<std::int32_t> basis = sampleMembers(j, online_.sample_cap);
+  const auto sampled = static_cast<std::ptrdiff_t>(basis.size());
+  // A sample comes sorted; all members of a small surface do not.
+  if (!std::is_sorted(basis.begin(), basis.end())) {
+    std::sort(basis.begin(), basis.end());
+  }
   for (const auto* list :
        {&surfaces_[static_cast<std::size_t>(j)].hull, &store_.surface(j).fresh}) {
     for (const std::int32_t i : *list) {
@@ -101,7 +106,9 @@ std::vector<std::int32_t> OnlineMStep::rectangleBasis(std::int32_t j) {
       }
     }
   }
-  std::sort(basis.begin(), basis.end());
+  // Only the few hull and fresh points need sorting, then one merge.
+  std::sort(basis.begin() + sampled, basis.end());
+  std::inplace_merge(basis.begin(), basis.begin() + sampled, basis.end());
   basis.erase(std::unique(basis.begin(), basis.end()), basis.end());
   return basis;
 }
