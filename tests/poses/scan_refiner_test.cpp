@@ -149,6 +149,42 @@ TEST(ScanRefiner, LineMapKeepsOnlyPointsOnLines) {
   EXPECT_EQ(LineMap({sparse}, ScanRefineOptions{}).size(), 0u);
 }
 
+// A wall, then a 30 cm face turning off it (a deep jamb, a pillar's side),
+// beams 10 cm apart: the points next to the corner have neighbourhoods that
+// turn it. With one-sided normals each takes the normal of its own side (the
+// face's: along the wall, what the wall's points cannot tell); without them,
+// as before, they have none. The vertex between the two lines gets none
+// either way. (Beams too close for the noise, beside the sensor, get none
+// either: KeepsTheGuessAlongACorridor fails without the side's minimum
+// length.)
+TEST(ScanRefiner, Item15_TheEndOfALineTakesTheNormalOfItsSide) {
+  Rays scan;
+  for (int i = 0; i < 8; ++i) {
+    scan.ends.emplace_back(0.1 * i, 1.2);  // the wall y = 1.2 up to x = 0.7
+  }
+  for (int i = 1; i <= 3; ++i) {
+    scan.ends.emplace_back(0.7, 1.2 + 0.1 * i);  // the face x = 0.7
+  }
+  const Eigen::Vector2d wall_end = scan.ends[6], vertex = scan.ends[7], face_start = scan.ends[8];
+  ScanRefineOptions off;
+  off.one_sided_normals = false;
+  const LineMap before({scan}, off), after({scan}, ScanRefineOptions{});
+  Eigen::Vector2d q, n;
+  for (const Eigen::Vector2d& p : {wall_end, face_start, vertex}) {
+    ASSERT_TRUE(before.nearest(p, &q, &n));
+    EXPECT_NE(q, p);  // another point's line
+  }
+  EXPECT_EQ(after.size(), before.size() + 2);
+  ASSERT_TRUE(after.nearest(wall_end, &q, &n));
+  EXPECT_EQ(q, wall_end);
+  EXPECT_NEAR(std::abs(n.y()), 1.0, 1e-9);
+  ASSERT_TRUE(after.nearest(face_start, &q, &n));
+  EXPECT_EQ(q, face_start);
+  EXPECT_NEAR(std::abs(n.x()), 1.0, 1e-9);
+  ASSERT_TRUE(after.nearest(vertex, &q, &n));
+  EXPECT_NE(q, vertex);
+}
+
 // Cells of points far out (1e12 m) and on negative coordinates are hashed
 // without overflow (an edge cell), and a look-up there finds nothing.
 TEST(ScanRefiner, FarPointsDoNotOverflowTheGrid) {

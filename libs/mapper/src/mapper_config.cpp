@@ -110,6 +110,7 @@ void PosesSection::load(config::SectionReader& r) {
   r.read("keyframe_refine_sigma_m", l.refine.sigma_m);
   r.read("keyframe_refine_max_distance_m", l.refine.max_distance_m);
   r.read("keyframe_refine_information_scale", l.refine.information_scale);
+  r.read("keyframe_refine_one_sided_normals", l.refine.one_sided_normals);
   r.read("odometry_prior", l.odometry.enabled);
   r.read("odometry_noise_fraction", l.odometry.noise_fraction);
   r.read("odometry_noise_min_m", l.odometry.noise_min_m);

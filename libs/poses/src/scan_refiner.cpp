@@ -37,6 +37,32 @@ bool ScanRefineOptions::validate(std::string* why) const {
   return true;
 }
 
+namespace {
+
+// The unit normal of the line through p[lo..hi], false when they are no line
+// (the square root of the covariance's eigenvalue ratio above max_thickness).
+bool lineNormal(const std::vector<Eigen::Vector2d>& p, int lo, int hi, double max_thickness,
+                Eigen::Vector2d& normal) {
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (int j = lo; j <= hi; ++j) {
+    mean += p[j];
+  }
+  mean /= static_cast<double>(hi - lo + 1);
+  Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+  for (int j = lo; j <= hi; ++j) {
+    cov += (p[j] - mean) * (p[j] - mean).transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
+  const double small = std::max(eig.eigenvalues()(0), 0.0), large = eig.eigenvalues()(1);
+  if (!(large > 0.0) || std::sqrt(small / large) > max_thickness) {
+    return false;
+  }
+  normal = eig.eigenvectors().col(0).normalized();
+  return true;
+}
+
+}  // namespace
+
 LineMap::LineMap(const std::vector<Rays>& scans, const ScanRefineOptions& options)
     : cell_m_(options.max_distance_m), max_distance_m_(options.max_distance_m) {
   const int k = options.normal_half_width;
@@ -56,22 +82,30 @@ LineMap::LineMap(const std::vector<Rays>& scans, const ScanRefineOptions& option
       if (hi - lo < 2) {
         continue;  // fewer than three points: no line
       }
-      Eigen::Vector2d mean = Eigen::Vector2d::Zero();
-      for (int j = lo; j <= hi; ++j) {
-        mean += p[j];
-      }
-      mean /= static_cast<double>(hi - lo + 1);
-      Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
-      for (int j = lo; j <= hi; ++j) {
-        cov += (p[j] - mean) * (p[j] - mean).transpose();
-      }
-      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
-      const double small = std::max(eig.eigenvalues()(0), 0.0), large = eig.eigenvalues()(1);
-      if (!(large > 0.0) || std::sqrt(small / large) > options.max_thickness) {
-        continue;  // a corner, or beams so close that the noise hides the line
+      Eigen::Vector2d normal;
+      if (!lineNormal(p, lo, hi, options.max_thickness, normal)) {
+        // A corner, or beams so close that the noise hides the line. At the
+        // end of a line (a door's jamb seen by a few beams, then the wall),
+        // the side of the point that is a line gives its normal; a point
+        // between two lines gets none.
+        // A side counts only when it is long enough that the range noise
+        // (sigma_m) could not pass for its thickness: three beams 1 cm
+        // apart beside the sensor are no line whatever their spread says.
+        const double min_extent = options.sigma_m / options.max_thickness;
+        const auto side = [&](int a, int b, Eigen::Vector2d& normal_out) {
+          return b - a >= 2 && (p[b] - p[a]).norm() >= min_extent &&
+                 lineNormal(p, a, b, options.max_thickness, normal_out);
+        };
+        Eigen::Vector2d left, right;
+        const bool on_left = side(lo, i, left);
+        const bool on_right = side(i, hi, right);
+        if (!options.one_sided_normals || on_left == on_right) {
+          continue;
+        }
+        normal = on_left ? left : right;
       }
       points_.push_back(p[i]);
-      normals_.push_back(eig.eigenvectors().col(0).normalized());
+      normals_.push_back(normal);
     }
   }
   for (std::size_t i = 0; i < points_.size(); ++i) {

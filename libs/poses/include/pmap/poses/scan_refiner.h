@@ -48,6 +48,10 @@ struct ScanRefineOptions {
   /// corner, and not beams so close together that the range noise hides
   /// the line's direction.
   double max_thickness = 0.25;
+  /// When the neighbourhood on both sides is no line (a corner), the side
+  /// of the point that is one gives its normal, if only one is: the end of
+  /// a line, such as a door's jamb seen by a few beams before the wall.
+  bool one_sided_normals = true;
   double huber_sigmas = 2.0;  ///< residuals beyond this many sigma weigh less (Huber)
   int max_iterations = 20;
   /// Of the points' information, the share that is taken as independent.
