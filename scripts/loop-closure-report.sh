@@ -133,26 +133,27 @@ width); the others use \`pose_laser_aperture_deg = 180\` from
 ## Occupancy grids (\`grid.png\`, loop closure on, 10 cm cells)
 $grids
 
-What the pictures showed when this page was last looked at (2026-12-05,
-with the loop tests on the search worker, 4bc521a): ACES is the building's
-grid of corridors with thin single walls; no doubled wall is visible. Intel
-comes out as one building: the outer ring and rooms are single, but the two
-long inner corridor walls come out bowed, as arcs, where the real ones are
-straight: heading drift the loops did not take out there (issue 15). MIT
-CSAIL does not hold together: the central rectangular block is turned
-against the corridors around it, the corridor along its upper left side and
-the long diagonal corridor below it are doubled (two parallel corridors
-some metres apart), and the rooms at the upper right are smeared. On
-2026-12-04 (7612a90, 152 loops accepted of 258 candidates) the same log gave
-a building that held together, with single walls around the block and one
-fainter second line along the diagonal corridor. The difference is not the
-change of 4bc521a as such: with \`loop_search_latency_keyframes = 0\`, where
-the old and the new code run the same solves (the same trajectories to the
-bit on the simulated loop and aliasing worlds), MIT CSAIL comes out distorted as well (96 loops of 156
-candidates); and with Ceres' tolerances tightened by six orders of magnitude
-(tried, not kept) it stays distorted (108 of 173). The outcome on this log
-turns on millimetres in the first closures (the fourth loop's keyframe moved
-7 mm in one run, 16 mm in the other): the good picture of 2026-12-04 was one
-outcome of a fragile sequence, not a robust result. Not fixed (issue 15).
+What the pictures showed when this page was last looked at (2026-12-07,
+with one-sided normals in the keyframe refinement, poses.md "Keyframe
+edges"): ACES is the building's grid of corridors with thin single walls;
+no doubled wall is visible. Intel comes out as one building: the outer ring
+and rooms are single, but the two long inner corridor walls come out
+bowed, as arcs, where the real ones are straight: heading drift the loops
+did not take out there (issue 15). MIT CSAIL holds together: the central
+rectangular block sits square with the corridors around it and the long
+diagonal corridor is single (130 loops accepted of 260 candidates).
+Until this change it did not (86 of 170: the block turned against the
+corridors, two corridors doubled, the rooms at the upper right smeared),
+and the outcome was fragile: it turned on millimetres in the first
+closures (2026-12-05: the same code gave a good picture on 2026-12-04 and
+a distorted one after a change that leaves the solves the same). Checked
+the same way for the new rule, one run each, MIT CSAIL with small
+perturbations, without / with one-sided normals (loops accepted, and the
+picture): as shipped 86 distorted / 130 holds; \`loop_search_latency_keyframes
+= 0\` 89 distorted / 133 holds; \`keyframe_refine_sigma_m = 0.031\` 84
+distorted / 107 holds (the rooms at the upper right a little smeared);
+\`loop_min_score = 0.41\` 134 holds / 124 holds (a faint second line along
+the diagonal corridor). Without the rule the log held together in one case
+of four, with it in four of four.
 DOC
 echo "wrote doc/loop-closure.md"
