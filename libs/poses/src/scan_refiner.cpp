@@ -84,13 +84,16 @@ LineMap::LineMap(const std::vector<Rays>& scans, const ScanRefineOptions& option
       }
       Eigen::Vector2d normal;
       if (!lineNormal(p, lo, hi, options.max_thickness, normal)) {
-        // A corner, or beams so close that the noise hides the line. At the
-        // end of a line (a door's jamb seen by a few beams, then the wall),
-        // the side of the point that is a line gives its normal; a point
-        // between two lines gets none.
-        // A side counts only when it is long enough that the range noise
-        // (sigma_m) could not pass for its thickness: three beams 1 cm
-        // apart beside the sensor are no line whatever their spread says.
+        // A corner, or beams so close that the noise hides the line.
+        if (!options.one_sided_normals) {
+          continue;
+        }
+        // At the end of a line (a door's jamb seen by a few beams, then the
+        // wall), the side of the point that is a line gives its normal; a
+        // point between two lines gets none. A side counts only when it is
+        // long enough that the range noise (sigma_m) could not pass for its
+        // thickness: three beams 1 cm apart beside the sensor are no line
+        // whatever their spread says.
         const double min_extent = options.sigma_m / options.max_thickness;
         const auto side = [&](int a, int b, Eigen::Vector2d& normal_out) {
           return b - a >= 2 && (p[b] - p[a]).norm() >= min_extent &&
@@ -99,7 +102,7 @@ LineMap::LineMap(const std::vector<Rays>& scans, const ScanRefineOptions& option
         Eigen::Vector2d left, right;
         const bool on_left = side(lo, i, left);
         const bool on_right = side(i, hi, right);
-        if (!options.one_sided_normals || on_left == on_right) {
+        if (on_left == on_right) {
           continue;
         }
         normal = on_left ? left : right;
